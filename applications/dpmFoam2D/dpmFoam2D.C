@@ -1,0 +1,121 @@
+/*---------------------------------------------------------------------------*\
+Application
+    dpmFoam2D
+
+Group
+    grpLagrangianSolvers
+
+Description
+    Soft-sphere CFD-DEM solver for 2D gas-solid fluidized beds of binary
+    particle mixtures (Norouzi, Mostoufi and Sotudeh-Gharebagh, 2012).
+
+    The gas: volume-averaged incompressible Navier-Stokes in the formulation
+    where the gas sees the whole pressure gradient, solved with PIMPLE on a
+    one-cell-thick Cartesian mesh; p_rgh is the pressure less the gas's
+    hydrostatic head, relative to the outlet. The particles: the DEM of
+    src/dem advanced in sub-steps each CFD step, with the drag coupled
+    semi-implicitly. See docs/model.md.
+
+Usage
+    dpmFoam2D [-cloud name] [-postProcess [-func name]]
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "pimpleControl.H"
+#include "gasProperties.H"
+#include "fluidization.H"
+#include "dpmCloud.H"
+#include "solverTimers.H"
+#include "fixedValueFvPatchFields.H"
+
+#define PIMPLE_CONTROL
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Soft-sphere CFD-DEM solver for 2D gas-solid fluidized beds"
+        " of binary particle mixtures."
+    );
+    argList::addOption
+    (
+        "cloud",
+        "name",
+        "Name of the particle cloud (default 'particles')"
+    );
+
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createControl.H"
+    #include "createFields.H"
+    #include "createInletVelocity.H"
+
+    // The initial state: the first particle file and the restart state
+    if (!isFile(runTime.timePath()/"uniform"/"dem.state"))
+    {
+        particles.write();
+    }
+    particles.writeParticlesIfDue();
+
+    solverTimers timers(runTime);
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        // Particles: gas at the particles, DEM sub-steps, reaction on the gas
+        timers.start();
+        particles.interpolateGas(U);
+        timers.stop(solverTimers::coupling);
+
+        timers.start();
+        particles.advance();
+        timers.stop(solverTimers::dem);
+
+        timers.start();
+        particles.mapToGas();
+        voidagef = fvc::interpolate(voidage);
+        timers.stop(solverTimers::coupling);
+
+        // Gas: PIMPLE
+        timers.start();
+        while (pimple.loop())
+        {
+            #include "UEqn.H"
+
+            while (pimple.correct())
+            {
+                #include "pEqn.H"
+            }
+        }
+        timers.stop(solverTimers::gas);
+
+        timers.start();
+        particles.writeParticlesIfDue();
+        runTime.write();
+        timers.stop(solverTimers::output);
+
+        runTime.printExecutionTime(Info);
+        timers.progress();
+    }
+
+    timers.summary();
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,604 @@
+#include "dpmCloud.H"
+#include "gasProperties.H"
+#include "fluidization.H"
+#include "positiveEntry.H"
+#include "emptyFvPatch.H"
+#include "fixedValueFvPatchFields.H"
+#include "zeroGradientFvPatchFields.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(dpmCloud, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- Patch types of the voidage: the distributor sees particle-free gas
+//  (voidage 1, so the face flux there is exactly U0), others zero gradient
+wordList voidagePatchTypes(const fvMesh& mesh, const word& inletPatch)
+{
+    wordList types(mesh.boundary().size(), zeroGradientFvPatchScalarField::typeName);
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh.boundary()[patchi];
+        if (isA<emptyFvPatch>(patch))
+        {
+            types[patchi] = emptyFvPatch::typeName;
+        }
+        else if (patch.name() == inletPatch)
+        {
+            types[patchi] = fixedValueFvPatchScalarField::typeName;
+        }
+    }
+    return types;
+}
+
+IOobject fieldIO(const word& name, const fvMesh& mesh, const bool write)
+{
+    return IOobject
+    (
+        name,
+        mesh.time().timeName(),
+        mesh,
+        IOobject::NO_READ,
+        write ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+    );
+}
+
+scalar readVoidageMin(const dictionary& dict)
+{
+    const scalar defaultValue = 0.1;
+    return boundedEntry(dict, "voidageMin", 0, 1, true, &defaultValue);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Call>
+void Foam::dpmCloud::guarded(const char* what, const Call& call) const
+{
+    try
+    {
+        call();
+    }
+    catch (const dem::Error& err)
+    {
+        FatalIOErrorInFunction(dict_)
+            << what << " (settings in " << dict_.name() << "):" << nl
+            << "    " << err.what() << exit(FatalIOError);
+    }
+}
+
+
+Foam::fileName Foam::dpmCloud::stateFile(const word& timeName) const
+{
+    return mesh_.time().path()/timeName/"uniform"/"dem.state";
+}
+
+
+dem::Settings Foam::dpmCloud::demSettings(const scalar) const
+{
+    dem::Settings s;
+
+    const dictionary& classes = dict_.subDict("classes");
+    for (const word& name : classNames_)
+    {
+        const dictionary& c = classes.subDict(name);
+        s.classes.push_back
+        (
+            dem::ParticleClass
+            {
+                name, c.get<scalar>("diameter"), c.get<scalar>("density")
+            }
+        );
+        if (s.classes.back().diameter > min(grid_.dx(), grid_.dy()))
+        {
+            FatalIOErrorInFunction(c)
+                << "Entry 'diameter' = " << s.classes.back().diameter
+                << " of class " << name << " in " << dict_.name()
+                << " is larger than the gas cell (" << grid_.dx() << " x "
+                << grid_.dy() << " m); allowed range (0, "
+                << min(grid_.dx(), grid_.dy()) << "]" << exit(FatalIOError);
+        }
+    }
+
+    const dictionary& contact = dict_.subOrEmptyDict("contact");
+    dem::ContactSettings& cs = s.contact;
+    cs.kn = contact.lookupOrDefault<scalar>("kn", cs.kn);
+    cs.kt = contact.lookupOrDefault<scalar>("kt", cs.kt);
+    cs.restitution = contact.lookupOrDefault<scalar>("restitution", cs.restitution);
+    cs.restitutionWall =
+        contact.lookupOrDefault<scalar>("restitutionWall", cs.restitutionWall);
+    cs.frictionParticle =
+        contact.lookupOrDefault<scalar>("frictionParticle", cs.frictionParticle);
+    cs.frictionWall = contact.lookupOrDefault<scalar>("frictionWall", cs.frictionWall);
+
+    s.box = dem::Box{grid_.xMin(), grid_.xMax(), grid_.yMin(), grid_.yMax()};
+    s.gravity[0] = g_.x();
+    s.gravity[1] = g_.y();
+    s.dt = dict_.get<scalar>("deltaT");
+    s.nThreads = dict_.lookupOrDefault<label>("nThreads", 1);
+    return s;
+}
+
+
+std::vector<int> Foam::dpmCloud::classCounts() const
+{
+    const dictionary& classes = dict_.subDict("classes");
+    std::vector<int> counts;
+    for (const word& name : classNames_)
+    {
+        const dictionary& c = classes.subDict(name);
+        if (c.found("count"))
+        {
+            counts.push_back(c.get<label>("count"));
+        }
+        else
+        {
+            // A mass fraction of the bed's total mass
+            const scalar w = boundedEntry(c, "massFraction", 0, 1, false);
+            const scalar M = positiveEntry(dict_, "totalMass");
+            const scalar d = c.get<scalar>("diameter");
+            const scalar m =
+                c.get<scalar>("density")*constant::mathematical::pi*d*d*d/6;
+            counts.push_back(int(std::round(w*M/m)));
+        }
+        if (counts.back() < 1)
+        {
+            FatalIOErrorInFunction(c)
+                << "Class " << name << " in " << dict_.name()
+                << " has " << counts.back() << " particles; each class needs"
+                << " 'count' >= 1 (or a massFraction that gives one)"
+                << exit(FatalIOError);
+        }
+    }
+    return counts;
+}
+
+
+void Foam::dpmCloud::initialise(const bool postProcess)
+{
+    const fileName restart = stateFile(mesh_.time().timeName());
+    if (isFile(restart))
+    {
+        guarded("Cannot read the particle state", [&]{ dem_->load(restart); });
+        Info<< "Particles: " << size() << " read from " << restart << endl;
+        return;
+    }
+    if (postProcess)
+    {
+        FatalErrorInFunction
+            << "No particle state " << restart << " for time "
+            << mesh_.time().timeName() << exit(FatalError);
+    }
+
+    const dictionary& bed = dict_.subDict("initialBed");
+    if (bed.found("file"))
+    {
+        const fileName file = bed.get<fileName>("file").expand();
+        guarded("Cannot read the initial bed", [&]{ dem_->load(file); });
+        Info<< "Particles: " << size() << " read from " << file << endl;
+        return;
+    }
+
+    // Random well-mixed packing, then settling under gravity with no gas
+    const std::vector<int> counts = classCounts();
+    const scalar width = grid_.xMax() - grid_.xMin();
+    scalar area = 0;
+    forAll(classNames_, k)
+    {
+        const scalar d = dem_->settings().classes[k].diameter;
+        area += counts[k]*constant::mathematical::pi*d*d/4;
+    }
+    const scalar packHeight = bed.lookupOrDefault<scalar>
+    (
+        "packHeight", min(3*area/width, grid_.yMax() - grid_.yMin())
+    );
+    const label seed = bed.lookupOrDefault<label>("seed", 1);
+    const scalar settleTime = bed.lookupOrDefault<scalar>("settleTime", 1.0);
+
+    Info<< "Particles: packing";
+    forAll(classNames_, k) Info<< ' ' << counts[k] << ' ' << classNames_[k];
+    Info<< " at random in " << width << " x " << packHeight << " m (seed "
+        << seed << "), then " << settleTime << " s of settling" << endl;
+
+    guarded
+    (
+        "Cannot pack the initial bed",
+        [&]
+        {
+            dem_->packRandom
+            (
+                counts,
+                dem::Box
+                {
+                    grid_.xMin(), grid_.xMax(), grid_.yMin(),
+                    grid_.yMin() + packHeight
+                },
+                std::uint64_t(seed)
+            );
+            dem_->settle(settleTime, 0);
+        }
+    );
+    Info<< "Particles: settled, kinetic energy " << dem_->kineticEnergy()
+        << " J, largest overlap " << dem_->maxOverlap() << " m" << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dpmCloud::dpmCloud
+(
+    const word& name,
+    const fvMesh& mesh,
+    const gasProperties& gas,
+    const vector& g,
+    const bool postProcess
+)
+:
+    regIOobject
+    (
+        IOobject
+        (
+            name,
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            postProcess ? IOobject::NO_WRITE : IOobject::AUTO_WRITE
+        )
+    ),
+    mesh_(mesh),
+    dict_
+    (
+        IOobject
+        (
+            "particleProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    grid_(mesh),
+    rhoGas_(gas.rho()),
+    g_(g),
+    classNames_(dict_.subDict("classes").toc()),
+    drag_(dragModel::New(dict_, gas.rho(), gas.mu())),
+    writeInterval_(positiveEntry(dict_, "writeInterval", 0.01)),
+    voidageMin_(readVoidageMin(dict_)),
+    overlapStart_(),
+    voidage_
+    (
+        fieldIO("voidage", mesh, !postProcess),
+        mesh,
+        dimensionedScalar("one", dimless, 1.0),
+        voidagePatchTypes(mesh, gas.inletPatch())
+    ),
+    porosity2D_
+    (
+        fieldIO("porosity2D", mesh, false),
+        mesh,
+        dimensionedScalar("one", dimless, 1.0),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    Kc_
+    (
+        fieldIO("Kc", mesh, false),
+        mesh,
+        dimensionedScalar(dimDensity/dimTime, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    Fp_
+    (
+        fieldIO("Fp", mesh, false),
+        mesh,
+        dimensionedVector(dimForce/dimVolume, Zero),
+        zeroGradientFvPatchVectorField::typeName
+    ),
+    Ustar_
+    (
+        fieldIO("Ustar", mesh, false),
+        mesh,
+        dimensionedVector(dimVelocity, Zero),
+        zeroGradientFvPatchVectorField::typeName
+    )
+{
+    if (classNames_.size() < 1)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "No particle classes in " << dict_.name() << "/classes"
+            << exit(FatalIOError);
+    }
+
+    const dem::Settings settings = demSettings(g_.y());
+    guarded
+    (
+        "Invalid particle settings",
+        [&]{ dem_.reset(new dem::Simulation(settings)); }
+    );
+
+    initialise(postProcess);
+
+    writer_.reset
+    (
+        new particleWriter
+        (
+            mesh.time().path(), grid_.depth(), mesh.time().value()
+        )
+    );
+
+    updateVoidage();
+}
+
+
+Foam::dpmCloud::~dpmCloud()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::dpmCloud::totalMass() const
+{
+    scalar sum = 0;
+    for (label i = 0; i < size(); ++i) sum += dem_->mass()[i];
+    return sum;
+}
+
+
+Foam::scalar Foam::dpmCloud::totalVolume() const
+{
+    scalar sum = 0;
+    for (label i = 0; i < size(); ++i)
+    {
+        const scalar d = dem_->diameter()[i];
+        sum += constant::mathematical::pi*d*d*d/6;
+    }
+    return sum;
+}
+
+
+Foam::scalarList Foam::dpmCloud::massFractions() const
+{
+    scalarList w(classNames_.size(), Zero);
+    for (label i = 0; i < size(); ++i)
+    {
+        w[dem_->classIndex()[i]] += dem_->mass()[i];
+    }
+    const scalar M = sum(w);
+    forAll(w, k) w[k] /= max(M, VSMALL);
+    return w;
+}
+
+
+Foam::scalarList Foam::dpmCloud::classDiameters() const
+{
+    scalarList d(classNames_.size());
+    forAll(d, k) d[k] = dem_->settings().classes[k].diameter;
+    return d;
+}
+
+
+Foam::scalarList Foam::dpmCloud::classDensities() const
+{
+    scalarList rho(classNames_.size());
+    forAll(rho, k) rho[k] = dem_->settings().classes[k].density;
+    return rho;
+}
+
+
+Foam::label Foam::dpmCloud::subSteps() const
+{
+    const scalar dtGas = mesh_.time().deltaTValue();
+    const scalar dtDem = dem_->settings().dt;
+    const label n = label(std::round(dtGas/dtDem));
+    if (n < 1 || mag(n*dtDem - dtGas) > 1e-9*dtGas)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "The DEM step 'deltaT' = " << dtDem << " in " << dict_.name()
+            << " does not divide the CFD step deltaT = " << dtGas
+            << " of system/controlDict; allowed: deltaT(CFD)/deltaT(DEM)"
+            << " a whole number >= 1" << exit(FatalIOError);
+    }
+    return n;
+}
+
+
+void Foam::dpmCloud::interpolateGas(const volVectorField& U)
+{
+    const label n = size();
+    const scalar pi = constant::mathematical::pi;
+    const scalarField& eps = voidage_.primitiveField();
+    const vectorField& Uc = U.primitiveField();
+
+    const double* x = dem_->x();
+    const double* y = dem_->y();
+    const double* vx = dem_->vx();
+    const double* vy = dem_->vy();
+    const double* d = dem_->diameter();
+
+    scalarField epsP(n), dP(n), slip(n);
+    double* uX = dem_->gasVelocityX();
+    double* uY = dem_->gasVelocityY();
+    for (label i = 0; i < n; ++i)
+    {
+        label cells[4];
+        scalar w[4];
+        grid_.interpolationStencil(x[i], y[i], cells, w);
+        scalar e = 0;
+        vector u = Zero;
+        for (int k = 0; k < 4; ++k)
+        {
+            e += w[k]*eps[cells[k]];
+            u += w[k]*Uc[cells[k]];
+        }
+        epsP[i] = e;
+        dP[i] = d[i];
+        uX[i] = u.x();
+        uY[i] = u.y();
+        slip[i] = std::hypot(u.x() - vx[i], u.y() - vy[i]);
+    }
+
+    K_.setSize(n);
+    drag_->dragCoefficient(epsP, dP, slip, K_);
+
+    // Drag, and the buoyancy of the hydrostatic gas pressure
+    double* Kd = dem_->dragCoefficient();
+    double* fX = dem_->extraForceX();
+    double* fY = dem_->extraForceY();
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar Vp = pi*d[i]*d[i]*d[i]/6;
+        Kd[i] = K_[i];
+        fX[i] = -rhoGas_*Vp*g_.x();
+        fY[i] = -rhoGas_*Vp*g_.y();
+    }
+    Ustar_.primitiveFieldRef() = Uc;
+}
+
+
+void Foam::dpmCloud::advance()
+{
+    const scalar dtGas = mesh_.time().deltaTValue();
+    guarded("The particles cannot advance", [&]{ dem_->advance(dtGas); });
+}
+
+
+void Foam::dpmCloud::mapToGas()
+{
+    // The reaction on the gas, shared by the cells as the particle's area
+    // was at the start of the step, where the gas was interpolated
+    const label n = size();
+    const scalar Vc = grid_.cellVolume();
+    scalarField& Kc = Kc_.primitiveFieldRef();
+    vectorField& Fp = Fp_.primitiveFieldRef();
+    Kc = 0;
+    Fp = Zero;
+    const double* FX = dem_->meanFluidForceX();
+    const double* FY = dem_->meanFluidForceY();
+    for (label i = 0; i < n; ++i)
+    {
+        for (label k = overlapStart_[i]; k < overlapStart_[i + 1]; ++k)
+        {
+            const label c = overlapCells_[k];
+            const scalar f = overlapFraction_[k]/Vc;
+            Kc[c] += f*K_[i];
+            Fp[c] += vector(f*FX[i], f*FY[i], 0);
+        }
+    }
+    Kc_.correctBoundaryConditions();
+    Fp_.correctBoundaryConditions();
+
+    updateVoidage();
+}
+
+
+void Foam::dpmCloud::updateVoidage()
+{
+    const label n = size();
+    const scalar cellArea = grid_.dx()*grid_.dy();
+    const double* x = dem_->x();
+    const double* y = dem_->y();
+    const double* d = dem_->diameter();
+
+    scalarField& porosity = porosity2D_.primitiveFieldRef();
+    porosity = 1;
+
+    overlapStart_.setSize(n + 1);
+    overlapCells_.clear();
+    overlapFraction_.clear();
+    overlapStart_[0] = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar r = 0.5*d[i];
+        const scalar discArea = constant::mathematical::pi*r*r;
+        grid_.forEachDiscOverlap
+        (
+            x[i], y[i], r,
+            [&](const label c, const scalar area)
+            {
+                porosity[c] -= area/cellArea;
+                overlapCells_.append(c);
+                overlapFraction_.append(area/discArea);
+            }
+        );
+        overlapStart_[i + 1] = overlapCells_.size();
+    }
+
+    scalarField& eps = voidage_.primitiveFieldRef();
+    forAll(eps, c)
+    {
+        eps[c] = max(fluidization::voidage3D(porosity[c]), voidageMin_);
+    }
+    porosity2D_.correctBoundaryConditions();
+    voidage_.correctBoundaryConditions();
+}
+
+
+void Foam::dpmCloud::writeParticlesIfDue()
+{
+    const Time& time = mesh_.time();
+    const scalar t = time.value();
+    const scalar k = std::round(t/writeInterval_);
+    if (mag(t - k*writeInterval_) < 0.5*time.deltaTValue())
+    {
+        writeParticles();
+    }
+}
+
+
+void Foam::dpmCloud::writeParticles()
+{
+    writer_->write(*dem_, mesh_.time().value(), mesh_.time().timeName());
+}
+
+
+void Foam::dpmCloud::report(Ostream& os) const
+{
+    const dem::Settings& s = dem_->settings();
+    std::vector<label> counts(classNames_.size(), 0);
+    for (label i = 0; i < size(); ++i) ++counts[dem_->classIndex()[i]];
+    const scalarList w = massFractions();
+
+    os  << "Particles (" << dict_.name() << "):" << nl;
+    forAll(classNames_, k)
+    {
+        os  << "    " << classNames_[k] << ": " << counts[k]
+            << " particles, d = " << s.classes[k].diameter*1e3 << " mm, rho = "
+            << s.classes[k].density << " kg/m3, mass fraction " << w[k] << nl;
+    }
+    os  << "    total mass " << totalMass() << " kg" << nl
+        << "    bed depth (mesh thickness) " << grid_.depth()*1e3 << " mm, gas cells "
+        << grid_.dx()*1e3 << " x " << grid_.dy()*1e3 << " mm ("
+        << grid_.nx() << " x " << grid_.ny() << ")" << nl
+        << "    time steps: CFD " << mesh_.time().deltaTValue() << " s, DEM "
+        << s.dt << " s (" << subSteps() << " sub-steps); eq. 7 bound "
+        << dem_->timeStepBound() << " s" << nl
+        << "    particle files every " << writeInterval_ << " s in "
+        << mesh_.time().path()/"particles" << endl;
+}
+
+
+bool Foam::dpmCloud::writeObject
+(
+    IOstream::streamFormat,
+    IOstream::versionNumber,
+    IOstream::compressionType,
+    const bool
+) const
+{
+    const fileName file = stateFile(mesh_.time().timeName());
+    mkDir(file.path());
+    guarded("Cannot write the particle state", [&]{ dem_->save(file); });
+    return true;
+}

@@ -1,0 +1,31 @@
+#include "dragModel.H"
+
+Foam::autoPtr<Foam::dragModel> Foam::dragModel::New
+(
+    const dictionary& dict,
+    const scalar rho,
+    const scalar mu
+)
+{
+    const word modelType(dict.lookupOrDefault<word>("dragModel", "ErgunWenYu"));
+
+    Info<< "Selecting drag model " << modelType << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "dragModel",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<dragModel>
+    (
+        cstrIter()(dict.subOrEmptyDict(modelType + "Coeffs"), rho, mu)
+    );
+}

@@ -1,0 +1,202 @@
+#include "particleWriter.H"
+#include "OSspecific.H"
+#include "IOstreams.H"
+#include "OFstream.H"
+#include "dem/Facade.hpp"
+
+#include <hdf5.h>
+#include <cstdio>
+#include <algorithm>
+#include <vector>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Write one dataset of shape [n] or [n, width]
+template<class T>
+void writeDataset
+(
+    hid_t file, const char* name, hid_t type,
+    const std::vector<T>& data, const hsize_t n, const hsize_t width
+)
+{
+    const hsize_t dims[2] = {n, width};
+    const hid_t space = H5Screate_simple(width > 1 ? 2 : 1, dims, nullptr);
+    const hid_t set = H5Dcreate2
+    (
+        file, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT
+    );
+    if (n > 0) H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
+    H5Dclose(set);
+    H5Sclose(space);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::particleWriter::particleWriter
+(
+    const fileName& caseDir,
+    const scalar depth,
+    const scalar startTime
+)
+:
+    dir_(caseDir/"particles"),
+    depth_(depth)
+{
+    mkDir(dir_);
+
+    // Files from before a restart are listed up to the start time; later
+    // ones belong to the run being replaced and are overwritten as it goes.
+    for (const fileName& f : readDir(dir_, fileName::FILE))
+    {
+        if (f.ext() != "h5") continue;
+        const word name(f.lessExt());
+        scalar t;
+        if (readScalar(name, t) && t <= startTime*(1 + 1e-12) + 1e-12)
+        {
+            times_.append(Tuple2<scalar, word>(t, name));
+        }
+    }
+    std::sort
+    (
+        times_.begin(), times_.end(),
+        [](const Tuple2<scalar, word>& a, const Tuple2<scalar, word>& b)
+        { return a.first() < b.first(); }
+    );
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::particleWriter::write
+(
+    const dem::Simulation& particles,
+    const scalar t,
+    const word& timeName
+)
+{
+    const hsize_t n = particles.size();
+    std::vector<float> position(3*n), velocity(3*n), omega(n), diameter(n);
+    std::vector<signed char> classIndex(n);
+    std::vector<int> id(n);
+    for (hsize_t i = 0; i < n; ++i)
+    {
+        position[3*i] = float(particles.x()[i]);
+        position[3*i + 1] = float(particles.y()[i]);
+        position[3*i + 2] = float(0.5*depth_);
+        velocity[3*i] = float(particles.vx()[i]);
+        velocity[3*i + 1] = float(particles.vy()[i]);
+        velocity[3*i + 2] = 0;
+        omega[i] = float(particles.omega()[i]);
+        diameter[i] = float(particles.diameter()[i]);
+        classIndex[i] = static_cast<signed char>(particles.classIndex()[i]);
+        id[i] = int(particles.id()[i]);
+    }
+
+    const fileName final = file(timeName);
+    const fileName partial = final + ".partial";
+    const hid_t h5 =
+        H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    if (h5 < 0)
+    {
+        FatalErrorInFunction
+            << "Cannot create " << partial << exit(FatalError);
+    }
+
+    const hid_t scalarSpace = H5Screate(H5S_SCALAR);
+    const hid_t attr = H5Acreate2
+    (
+        h5, "time", H5T_NATIVE_DOUBLE, scalarSpace, H5P_DEFAULT, H5P_DEFAULT
+    );
+    const double time = t;
+    H5Awrite(attr, H5T_NATIVE_DOUBLE, &time);
+    H5Aclose(attr);
+    H5Sclose(scalarSpace);
+
+    writeDataset(h5, "position", H5T_NATIVE_FLOAT, position, n, 3);
+    writeDataset(h5, "velocity", H5T_NATIVE_FLOAT, velocity, n, 3);
+    writeDataset(h5, "omega", H5T_NATIVE_FLOAT, omega, n, 1);
+    writeDataset(h5, "diameter", H5T_NATIVE_FLOAT, diameter, n, 1);
+    writeDataset(h5, "class", H5T_NATIVE_SCHAR, classIndex, n, 1);
+    writeDataset(h5, "id", H5T_NATIVE_INT, id, n, 1);
+
+    if (H5Fclose(h5) < 0 || std::rename(partial.c_str(), final.c_str()) != 0)
+    {
+        FatalErrorInFunction
+            << "Cannot write " << final << exit(FatalError);
+    }
+
+    // Replace a later entry of an earlier run; keep the list in time order
+    while (times_.size() && times_.last().first() >= t*(1 - 1e-12) - 1e-12)
+    {
+        times_.remove();
+    }
+    times_.append(Tuple2<scalar, word>(t, timeName));
+    writeIndex(particles);
+}
+
+
+void Foam::particleWriter::writeIndex(const dem::Simulation& particles) const
+{
+    const label n = particles.size();
+    const fileName final = dir_/"particles.xdmf";
+    const fileName partial = final + ".partial";
+    {
+        OFstream os(partial);
+        os  << "<?xml version=\"1.0\" ?>\n"
+            << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+            << "<Xdmf Version=\"2.0\">\n<Domain>\n"
+            << "<Grid Name=\"particles\" GridType=\"Collection\""
+            << " CollectionType=\"Temporal\">\n";
+
+        const auto item =
+            [&](const word& h5, const char* set, const char* type,
+                const int precision, const label width)
+            {
+                os  << "    <DataItem Dimensions=\"" << n;
+                if (width > 1) os << ' ' << width;
+                os  << "\" NumberType=\"" << type << "\" Precision=\""
+                    << precision << "\" Format=\"HDF\">" << h5 << ".h5:/"
+                    << set << "</DataItem>\n";
+            };
+        const auto attribute =
+            [&](const word& h5, const char* set, const char* center,
+                const char* kind, const char* type, const int precision,
+                const label width)
+            {
+                os  << "   <Attribute Name=\"" << set << "\" AttributeType=\""
+                    << kind << "\" Center=\"" << center << "\">\n";
+                item(h5, set, type, precision, width);
+                os  << "   </Attribute>\n";
+            };
+
+        for (const Tuple2<scalar, word>& t : times_)
+        {
+            const word& h5 = t.second();
+            os  << "  <Grid Name=\"particles_" << h5
+                << "\" GridType=\"Uniform\">\n"
+                << "   <Time Value=\"" << t.first() << "\"/>\n"
+                << "   <Topology TopologyType=\"Polyvertex\" NumberOfElements=\""
+                << n << "\"/>\n"
+                << "   <Geometry GeometryType=\"XYZ\">\n";
+            item(h5, "position", "Float", 4, 3);
+            os  << "   </Geometry>\n";
+            attribute(h5, "velocity", "Node", "Vector", "Float", 4, 3);
+            attribute(h5, "omega", "Node", "Scalar", "Float", 4, 1);
+            attribute(h5, "diameter", "Node", "Scalar", "Float", 4, 1);
+            attribute(h5, "class", "Node", "Scalar", "Char", 1, 1);
+            attribute(h5, "id", "Node", "Scalar", "Int", 4, 1);
+            os  << "  </Grid>\n";
+        }
+        os  << "</Grid>\n</Domain>\n</Xdmf>\n";
+    }
+    if (!Foam::mv(partial, final))
+    {
+        FatalErrorInFunction << "Cannot write " << final << exit(FatalError);
+    }
+}
