@@ -1,0 +1,30 @@
+#!/bin/bash
+# dpmMovie and dpmPictures on synthetic cases: a movie of 3 output times
+# with -every 1 has 3 frames (ffprobe), with -every 2 two; dpmPictures makes
+# per case the snapshots asked for and the M(t) plot, and one combined plot
+# with one curve per case (its -report).
+. "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
+. "$testsDir/pictures/pictureFunctions"
+
+makeParticleCase "$workDir/a" 0.01 0.02 0.03
+makeParticleCase "$workDir/b" 0.01 0.02
+/usr/bin/python3 "$testsDir/pictures/makeCase.py" mixing a 1.0 0.3 3 || fail "mixing a"
+/usr/bin/python3 "$testsDir/pictures/makeCase.py" mixing b 1.0 0.7 1 || fail "mixing b"
+
+frames() { ffprobe -v error -count_frames -select_streams v:0 \
+    -show_entries stream=nb_read_frames -of csv=p=0 "$1"; }
+dpmMovie a -fps 5 -o a.mp4 >log.movie 2>&1 || { cat log.movie; fail "dpmMovie failed"; }
+[ "$(frames a.mp4)" = 3 ] || fail "a.mp4 has $(frames a.mp4) frames, expected 3"
+dpmMovie a -every 2 -o a2.mp4 >log.movie2 2>&1 || { cat log.movie2; fail "dpmMovie -every 2"; }
+[ "$(frames a2.mp4)" = 2 ] || fail "a2.mp4 has $(frames a2.mp4) frames, expected 2"
+[ ! -d a/images/frames ] || fail "frames left behind without -keep"
+
+dpmPictures a b -times 0.01 0.03 -o all.png -report >log.pictures 2>&1 \
+    || { cat log.pictures; fail "dpmPictures failed"; }
+for f in a/images/snapshot_0.01.png a/images/snapshot_0.03.png a/images/mixing.png \
+         b/images/snapshot_0.01.png b/images/snapshot_0.02.png b/images/mixing.png all.png
+do
+    [ -s "$f" ] || fail "dpmPictures did not make $f"
+done
+tail -1 log.pictures | grep -q '"combinedCurves": 2' || { cat log.pictures; fail "combined plot curves"; }
+pass "movie frames and the set-of-cases pictures"

@@ -1,0 +1,35 @@
+#!/usr/bin/python3
+"""Checks a snapshot's class colours against the particles drawn.
+
+  countClassPixels.py <png> <particles.h5> <relTol>
+
+Counts the pixels of each class colour (bin/dpmPictureTools.CLASS_COLOURS,
+within 2/255 per channel: the discs are drawn unlit, so they are exact).
+Expected ratio small/large pixels = sum over small of d^2 / sum over large
+of d^2 (areas of the discs drawn, none overlapping or cut in the test data).
+Passes when |measured/expected - 1| <= relTol; prints both.
+"""
+
+import os
+import sys
+
+import numpy as np
+import matplotlib.image as mpimg
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "bin"))
+import dpmParticleIO as pio  # noqa: E402
+from dpmPictureTools import CLASS_COLOURS  # noqa: E402
+
+png, h5, relTol = sys.argv[1], sys.argv[2], float(sys.argv[3])
+img = mpimg.imread(png)[:, :, :3]
+counts = {}
+for c, colour in CLASS_COLOURS.items():
+    counts[c] = int(np.all(np.abs(img - np.array(colour)) <= 2.0 / 255, axis=2).sum())
+p = pio.read_particles(h5)
+d2 = p["diameter"].astype(float) ** 2
+expected = d2[p["class"] == 0].sum() / d2[p["class"] == 1].sum()
+measured = counts[0] / max(counts[1], 1)
+print("pixels: small %d, large %d; ratio %.4f, expected %.4f (areas), relTol %g"
+      % (counts[0], counts[1], measured, expected, relTol))
+if min(counts.values()) < 1000 or abs(measured / expected - 1) > relTol:
+    sys.exit("FAIL: class colours not in the expected proportion")
