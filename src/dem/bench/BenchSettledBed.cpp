@@ -1,0 +1,88 @@
+// Speed of the DEM on the paper's settled bed (6610 small + 1440 large, 0.15 m wide,
+// dt = 1e-5 s): particle-steps per second on 1 and 2 threads, at rest and with a uniform
+// drag that makes the bed roughly weightless. Figures go to docs/performance.md.
+//
+// The settled bed is made once (pack, settle 1 s on 2 threads) and cached in
+// $DEM_BENCH_STATE (default /tmp/demBench-settledBed.state).
+
+#include "dem/Facade.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <memory>
+#include <string>
+
+namespace {
+
+dem::Settings bedSettings(int threads)
+{
+    dem::Settings s;
+    s.classes = {{"small", 1.5e-3, 2525.0}, {"large", 2.5e-3, 2525.0}};
+    s.box = {0.0, 0.15, 0.0, 0.9};
+    s.dt = 1e-5;
+    s.nThreads = threads;
+    return s;
+}
+
+std::string statePath()
+{
+    const char* env = std::getenv("DEM_BENCH_STATE");
+    return env ? env : "/tmp/demBench-settledBed.state";
+}
+
+std::unique_ptr<dem::Simulation> settledBed(int threads)
+{
+    auto sim = std::make_unique<dem::Simulation>(bedSettings(threads));
+    try {
+        sim->load(statePath());
+        return sim;
+    } catch (const dem::Error&) {
+        // No usable cache: make the bed as the paper does.
+    }
+    auto fresh = std::make_unique<dem::Simulation>(bedSettings(2));
+    fresh->packRandom({6610, 1440}, {0.0, 0.15, 0.0, 0.5}, 2012);
+    fresh->settle(1.0, 1e-12);
+    fresh->save(statePath());
+    sim->load(statePath());
+    return sim;
+}
+
+/// Arguments: threads, drag (0: none, 1: uniform drag holding the bed's weight at u = 0.5 m/s).
+void BM_SettledBed(benchmark::State& state)
+{
+    const int threads = static_cast<int>(state.range(0));
+    const bool drag = state.range(1) != 0;
+    auto sim = settledBed(threads);
+    const std::size_t n = sim->size();
+    if (drag) {
+        const double u = 0.5;
+        for (std::size_t i = 0; i < n; ++i) {
+            sim->dragCoefficient()[i] = sim->mass()[i] * 9.81 / u;
+            sim->gasVelocityY()[i] = u;
+        }
+    }
+    const std::int64_t builds0 = sim->neighbourListBuilds();
+    const std::int64_t steps0 = sim->stepCount();
+    for (auto _ : state) {
+        sim->advance(1e-4);   // one CFD step = 10 DEM steps
+    }
+    const double steps = static_cast<double>(sim->stepCount() - steps0);
+    state.counters["particle_steps_per_s"] =
+        benchmark::Counter(static_cast<double>(n) * steps, benchmark::Counter::kIsRate);
+    state.counters["bytes_per_particle"] = static_cast<double>(sim->memoryBytes()) / static_cast<double>(n);
+    state.counters["steps_per_list_build"] =
+        steps / static_cast<double>(std::max<std::int64_t>(1, sim->neighbourListBuilds() - builds0));
+    state.counters["contacts_per_particle"] = static_cast<double>(sim->contactCount()) / static_cast<double>(n);
+}
+
+} // namespace
+
+BENCHMARK(BM_SettledBed)
+    ->ArgNames({"threads", "drag"})
+    ->Args({1, 0})->Args({2, 0})->Args({1, 1})->Args({2, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(3.0)
+    ->UseRealTime();
+
+BENCHMARK_MAIN();

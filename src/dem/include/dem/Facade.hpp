@@ -1,0 +1,139 @@
+#pragma once
+// The DEM library as the OpenFOAM side sees it: plain settings structs and plain
+// particle arrays. Deliberately free of Eigen so that wmake code can include it.
+
+#include "dem/Error.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dem {
+
+/// One size class of particles.
+struct ParticleClass {
+    std::string name;
+    double diameter;   ///< m
+    double density;    ///< kg/m^3
+};
+
+/// Linear spring-dashpot contact coefficients (model.md section 3).
+struct ContactSettings {
+    double kn = 800.0;                 ///< normal stiffness, N/m
+    double kt = -1.0;                  ///< tangential stiffness, N/m; < 0 means 2/7 kn
+    double restitution = 0.97;         ///< particle-particle, in (0, 1]
+    double restitutionWall = 0.97;     ///< particle-wall, in (0, 1]
+    double frictionParticle = 0.15;    ///< sliding friction particle-particle, >= 0
+    double frictionWall = 0.10;        ///< sliding friction particle-wall, >= 0
+};
+
+/// The domain: four plane walls x = xMin, x = xMax, y = yMin, y = yMax (m).
+struct Box {
+    double xMin, xMax, yMin, yMax;
+};
+
+/// Everything needed to build a Simulation.
+struct Settings {
+    std::vector<ParticleClass> classes;
+    ContactSettings contact;
+    Box box;
+    double gravity[2] = {0.0, -9.81};  ///< m/s^2
+    double dt = 1e-5;                  ///< DEM step, s
+    int nThreads = 1;
+    /// Verlet skin of the neighbour list built by NBS, m; < 0 means 0.1 x smallest diameter.
+    double neighbourSkin = -1.0;
+};
+
+class System;
+
+/// A DEM run: particles, walls, contacts; advanced in CFD steps with fluid forces.
+/// Particle index i is the same particle for the whole run (id[i] == i).
+class Simulation {
+public:
+    /// Validates the settings (ranges, eq. 7 time-step bound); throws dem::Error.
+    explicit Simulation(const Settings& settings);
+    ~Simulation();
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
+
+    /// Random, well-mixed, non-overlapping packing of countPerClass[k] particles of class k
+    /// in `region` (inside the box); reproducible for a given seed.
+    void packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed);
+
+    /// Adds one particle; throws if outside the box or overlapping another by more than
+    /// 1 % of the smaller diameter.
+    void addParticle(int classIndex, double x, double y,
+                     double vx = 0, double vy = 0, double omega = 0);
+
+    /// Advances without fluid until the kinetic energy per particle < keTolerance (J) and
+    /// falling (checked every 100 steps; a bed released from rest first gains energy), or
+    /// until maxTime (s) has passed; returns the time spent, s.
+    double settle(double maxTime, double keTolerance);
+
+    std::size_t size() const;
+    const Settings& settings() const;
+
+    /// @name Read-only particle state, length size()
+    ///@{
+    const double* x() const;
+    const double* y() const;
+    const double* vx() const;
+    const double* vy() const;
+    const double* omega() const;       ///< spin about z, rad/s
+    const double* diameter() const;
+    const double* mass() const;
+    const int* classIndex() const;
+    const std::int64_t* id() const;
+    ///@}
+
+    /// @name Fluid coupling inputs, set before advance() (length size(), zero by default).
+    /// Force on i = dragCoefficient[i] (gasVelocity_i - v_i) + extraForce_i, re-evaluated
+    /// with the current particle velocity at every DEM sub-step.
+    ///@{
+    double* dragCoefficient();         ///< N s/m
+    double* gasVelocityX();            ///< m/s
+    double* gasVelocityY();            ///< m/s
+    double* extraForceX();             ///< N
+    double* extraForceY();             ///< N
+    ///@}
+
+    /// Advances by one CFD step of dtOuter = n dt; throws dem::Error if dtOuter/dt is not an
+    /// integer (relative tolerance 1e-9) or a particle leaves the box.
+    void advance(double dtOuter);
+
+    /// @name Averages over the sub-steps of the last advance()
+    /// meanFluidForce = dragCoefficient (gasVelocity - meanVelocity) + extraForce exactly.
+    ///@{
+    const double* meanVelocityX() const;
+    const double* meanVelocityY() const;
+    const double* meanFluidForceX() const;
+    const double* meanFluidForceY() const;
+    ///@}
+
+    double time() const;               ///< s
+    std::int64_t stepCount() const;
+    double kineticEnergy() const;      ///< translational + rotational, J
+    double timeStepBound() const;      ///< eq. 7 bound for the smallest particle, s
+    std::size_t contactCount() const;  ///< touching pairs + particle-wall contacts
+
+    /// Elastic energy stored in the contact springs (normal and tangential), J.
+    double elasticEnergy() const;
+    /// Largest overlap of the last force evaluation (pairs and walls), m.
+    double maxOverlap() const;
+    /// Number of neighbour-list builds (NBS calls) so far.
+    std::int64_t neighbourListBuilds() const;
+    /// Heap memory held by particle, contact and search arrays, bytes.
+    std::size_t memoryBytes() const;
+
+    /// Writes the complete state, contact history included (tmp file, then rename).
+    void save(const std::string& path) const;
+    /// Reads a state written by save(); throws dem::Error naming the file if it is bad or
+    /// was written with other settings.
+    void load(const std::string& path);
+
+private:
+    std::unique_ptr<System> system_;
+};
+
+} // namespace dem

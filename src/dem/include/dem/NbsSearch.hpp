@@ -1,0 +1,45 @@
+#pragma once
+// NBS contact detection (Munjiza & Andrews 1998): walks the row and column lists of a
+// CellMapper, testing each particle only against its own and neighbouring cells.
+
+#include "dem/CellMapper.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace dem {
+
+/// A candidate pair, i < j.
+struct IndexPair {
+    int i;
+    int j;
+};
+
+/// No-binary-search neighbour search over a CellMapper.
+class NbsSearch {
+public:
+    /// Search grid over the rectangle, cells no smaller than the largest diameter + margin.
+    NbsSearch(double xMin, double xMax, double yMin, double yMax, double minCellSize);
+
+    /// All pairs with |x_j - x_i| < r_i + r_j + margin, i < j, in a fixed order (the walk's),
+    /// replacing the contents of `pairs`. Requires 2 r_max + margin <= cell size.
+    void findPairs(const double* x, const double* y, const double* r, std::size_t n,
+                   double margin, std::vector<IndexPair>& pairs);
+
+    const CellMapper& mapper() const { return mapper_; }
+    /// Heap memory of the search arrays, bytes.
+    std::size_t memoryBytes() const;
+
+private:
+    CellMapper mapper_;
+    std::vector<int> headsThisRow_;
+    std::vector<int> headsRowBelow_;
+    std::vector<int> columnNext_;
+};
+
+/// Test oracle: every pair tested, O(N^2). Same contract as NbsSearch::findPairs, pairs
+/// ordered by (i, j).
+void bruteForcePairs(const double* x, const double* y, const double* r, std::size_t n,
+                     double margin, std::vector<IndexPair>& pairs);
+
+} // namespace dem

@@ -1,0 +1,101 @@
+#pragma once
+// The DEM engine behind the facade: particles, walls, contact laws, the NBS neighbour list
+// and the velocity-Verlet stepper.
+
+#include "dem/ContactKernel.hpp"
+#include "dem/ContactList.hpp"
+#include "dem/ContactLaw.hpp"
+#include "dem/Facade.hpp"
+#include "dem/NbsSearch.hpp"
+#include "dem/Particles.hpp"
+#include "dem/PlaneWall.hpp"
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dem {
+
+/// Checks every setting, throwing dem::Error naming the first bad one.
+void validateSettings(const Settings& settings);
+
+/// Eq. 7 time-step bound (2 pi/5) sqrt(m_min/kn) over the classes, s; smallest class in `cls`.
+double timeStepBound(const Settings& settings, int* smallestClass = nullptr);
+
+/// Soft-sphere DEM of discs-as-spheres in the x-y plane.
+///
+/// One step (velocity Verlet, second order):
+///   v_half = v + dt/2 a(t);  x += dt v_half;  (rebuild neighbour list if needed)
+///   contact forces at x(t+dt) with the dashpots fed by v_half (first order in the
+///   damping only; the restitution test bounds the effect);
+///   v(t+dt) = v_half + dt/2 a(t+dt), where the linear fluid drag K (u - v(t+dt)) is taken
+///   implicitly (trapezoidal in the drag, so stiff drag cannot destabilise the step).
+class System {
+public:
+    explicit System(const Settings& settings);
+
+    const Settings& settings() const { return settings_; }
+    Particles& particles() { return p_; }
+    const Particles& particles() const { return p_; }
+    const std::vector<PlaneWall>& walls() const { return walls_; }
+
+    void addParticle(int cls, double x, double y, double vx, double vy, double omega);
+    void packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed);
+
+    void advance(double dtOuter);
+    double settle(double maxTime, double keTolerance);
+    /// One DEM step; with fluid = false the fluid inputs are ignored.
+    void step(bool fluid);
+
+    double time() const { return static_cast<double>(stepCount_) * settings_.dt; }
+    std::int64_t stepCount() const { return stepCount_; }
+    double kineticEnergy() const;
+    double elasticEnergy() const;
+    double timeStepBound() const { return timeStepBound_; }
+    std::size_t contactCount() const { return contactCount_; }
+    double maxOverlap() const { return maxOverlap_; }
+    std::int64_t neighbourListBuilds() const { return listBuilds_; }
+    std::size_t memoryBytes() const;
+
+    void save(const std::string& path) const;
+    void load(const std::string& path);
+
+private:
+    void buildLaws();
+    void rebuildNeighbourList();
+    void ensureReady();
+    /// Pair forces into the pair list (parallel over pairs, each pair once).
+    void computePairForces(double historyDt);
+    /// Gathers each particle's contact forces in a fixed order and does the second
+    /// half-kick (kick = false: only the gather, for the first evaluation).
+    void gatherAndKick(double historyDt, bool kick, bool fluid);
+    void setFluidForceAtCurrentVelocity(bool fluid);
+    [[noreturn]] void throwLostParticle() const;
+    const ContactLaw& pairLaw(int ci, int cj) const { return pairLaws_[ci * nClasses_ + cj]; }
+
+    Settings settings_;
+    int nClasses_;
+    double timeStepBound_;
+    double skin_;
+    std::vector<PlaneWall> walls_;
+    std::vector<ContactLaw> pairLaws_;   // nClasses x nClasses
+    std::vector<ContactLaw> wallLaws_;   // per class
+    Particles p_;
+    PairList pairs_;
+    WallList wallContacts_;
+    NbsSearch search_;
+    std::vector<IndexPair> found_;       // scratch of the search
+
+    std::int64_t stepCount_ = 0;
+    std::int64_t listBuilds_ = 0;
+    bool listValid_ = false;
+    bool forcesValid_ = false;
+    std::size_t contactCount_ = 0;
+    double maxOverlap_ = 0.0;
+    double meanWeight_ = 1.0;           // weight of this sub-step's velocity in the CFD-step mean
+
+    friend class StateFile;
+};
+
+} // namespace dem

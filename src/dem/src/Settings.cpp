@@ -1,0 +1,126 @@
+#include "dem/System.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace dem {
+
+std::string formatValue(double value)
+{
+    std::ostringstream s;
+    s << std::setprecision(6) << value;
+    return s.str();
+}
+
+namespace {
+
+// Written as !(value > 0) etc. so that NaN is rejected too.
+void requirePositive(double value, const std::string& name)
+{
+    if (!(value > 0.0) || !std::isfinite(value)) {
+        throw Error(name + " = " + formatValue(value) + " is outside (0, inf)");
+    }
+}
+
+void requireNonNegative(double value, const std::string& name)
+{
+    if (!(value >= 0.0) || !std::isfinite(value)) {
+        throw Error(name + " = " + formatValue(value) + " is outside [0, inf)");
+    }
+}
+
+void requireRestitution(double value, const std::string& name)
+{
+    if (!(value > 0.0 && value <= 1.0)) {
+        throw Error(name + " = " + formatValue(value) + " is outside (0, 1]");
+    }
+}
+
+std::string className(const Settings& s, int k)
+{
+    return "classes[" + std::to_string(k) + "] ('" + s.classes[k].name + "')";
+}
+
+} // namespace
+
+double timeStepBound(const Settings& settings, int* smallestClass)
+{
+    constexpr double pi = 3.14159265358979323846;
+    double mMin = INFINITY;
+    int kMin = 0;
+    for (std::size_t k = 0; k < settings.classes.size(); ++k) {
+        const double d = settings.classes[k].diameter;
+        const double m = settings.classes[k].density * pi * d * d * d / 6.0;
+        if (m < mMin) {
+            mMin = m;
+            kMin = static_cast<int>(k);
+        }
+    }
+    if (smallestClass) *smallestClass = kMin;
+    return 2.0 * pi / 5.0 * std::sqrt(mMin / settings.contact.kn);
+}
+
+void validateSettings(const Settings& s)
+{
+    if (s.classes.empty()) {
+        throw Error("classes is empty: at least one size class (diameter, density) is needed");
+    }
+    for (std::size_t k = 0; k < s.classes.size(); ++k) {
+        const int ki = static_cast<int>(k);
+        requirePositive(s.classes[k].diameter, className(s, ki) + ".diameter");
+        requirePositive(s.classes[k].density, className(s, ki) + ".density");
+    }
+    const ContactSettings& c = s.contact;
+    requirePositive(c.kn, "kn");
+    if (c.kt == 0.0 || std::isnan(c.kt) || std::isinf(c.kt)) {
+        throw Error("kt = " + formatValue(c.kt) + " is outside (0, inf) (or < 0 for 2/7 kn)");
+    }
+    requireRestitution(c.restitution, "restitution");
+    requireRestitution(c.restitutionWall, "restitutionWall");
+    requireNonNegative(c.frictionParticle, "frictionParticle");
+    requireNonNegative(c.frictionWall, "frictionWall");
+
+    const Box& b = s.box;
+    if (!(b.xMax > b.xMin) || !std::isfinite(b.xMax - b.xMin)) {
+        throw Error("box.xMax = " + formatValue(b.xMax) + " is outside (box.xMin = "
+                    + formatValue(b.xMin) + ", inf)");
+    }
+    if (!(b.yMax > b.yMin) || !std::isfinite(b.yMax - b.yMin)) {
+        throw Error("box.yMax = " + formatValue(b.yMax) + " is outside (box.yMin = "
+                    + formatValue(b.yMin) + ", inf)");
+    }
+    if (!std::isfinite(s.gravity[0]) || !std::isfinite(s.gravity[1])) {
+        throw Error("gravity = (" + formatValue(s.gravity[0]) + ", " + formatValue(s.gravity[1])
+                    + ") is outside the finite vectors");
+    }
+    if (s.nThreads < 1) {
+        throw Error("nThreads = " + std::to_string(s.nThreads) + " is outside [1, inf)");
+    }
+    if (std::isnan(s.neighbourSkin) || std::isinf(s.neighbourSkin)) {
+        throw Error("neighbourSkin = " + formatValue(s.neighbourSkin)
+                    + " is outside [0, inf) (or < 0 for 0.1 x smallest diameter)");
+    }
+
+    requirePositive(s.dt, "dt");
+    int kMin = 0;
+    const double bound = timeStepBound(s, &kMin);
+    if (s.dt > bound) {
+        throw Error("dt = " + formatValue(s.dt) + " s is outside (0, " + formatValue(bound)
+                    + "]: the time-step bound (2 pi/5) sqrt(m_min/kn) = " + formatValue(bound)
+                    + " s (paper eq. 7) of the smallest particle, " + className(s, kMin)
+                    + " of diameter " + formatValue(s.classes[kMin].diameter) + " m");
+    }
+}
+
+std::vector<PlaneWall> boxWalls(const Box& box)
+{
+    return {
+        {Eigen::Vector2d(box.xMin, box.yMin), Eigen::Vector2d(0.0, 1.0)},    // floor
+        {Eigen::Vector2d(box.xMax, box.yMin), Eigen::Vector2d(-1.0, 0.0)},   // right
+        {Eigen::Vector2d(box.xMin, box.yMax), Eigen::Vector2d(0.0, -1.0)},   // ceiling
+        {Eigen::Vector2d(box.xMin, box.yMin), Eigen::Vector2d(1.0, 0.0)},    // left
+    };
+}
+
+} // namespace dem

@@ -1,0 +1,203 @@
+// Binary state file: everything that the next step reads, so a restarted run continues
+// bit for bit (positions, velocities, forces of the last evaluation, the neighbour list
+// in its order, the contact history, the reference positions of the skin criterion).
+
+#include "dem/System.hpp"
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <type_traits>
+
+namespace dem {
+
+namespace {
+
+constexpr char magic[16] = "dpmFoam2D-dem\n";
+constexpr std::uint32_t version = 1;
+
+class Writer {
+public:
+    explicit Writer(std::ofstream& out) : out_(out) {}
+    template <class T> void value(const T& v)
+    {
+        static_assert(std::is_trivially_copyable_v<T>);
+        out_.write(reinterpret_cast<const char*>(&v), sizeof(T));
+    }
+    template <class T> void array(const std::vector<T>& a)
+    {
+        value(static_cast<std::uint64_t>(a.size()));
+        out_.write(reinterpret_cast<const char*>(a.data()),
+                   static_cast<std::streamsize>(a.size() * sizeof(T)));
+    }
+    void text(const std::string& s)
+    {
+        value(static_cast<std::uint64_t>(s.size()));
+        out_.write(s.data(), static_cast<std::streamsize>(s.size()));
+    }
+
+private:
+    std::ofstream& out_;
+};
+
+class Reader {
+public:
+    Reader(std::ifstream& in, const std::string& path) : in_(in), path_(path) {}
+    template <class T> T value()
+    {
+        T v;
+        read(reinterpret_cast<char*>(&v), sizeof(T));
+        return v;
+    }
+    template <class T> void array(std::vector<T>& a)
+    {
+        const auto n = value<std::uint64_t>();
+        if (n > (std::uint64_t(1) << 34)) fail("an array length of " + std::to_string(n));
+        a.resize(n);
+        read(reinterpret_cast<char*>(a.data()), n * sizeof(T));
+    }
+    std::string text()
+    {
+        const auto n = value<std::uint64_t>();
+        if (n > 4096) fail("a name of length " + std::to_string(n));
+        std::string s(n, ' ');
+        read(s.data(), n);
+        return s;
+    }
+    [[noreturn]] void fail(const std::string& what) const
+    {
+        throw Error("state file '" + path_ + "' is not a valid DEM state: " + what);
+    }
+
+private:
+    void read(char* to, std::size_t bytes)
+    {
+        in_.read(to, static_cast<std::streamsize>(bytes));
+        if (!in_) fail("it ends early (truncated?)");
+    }
+    std::ifstream& in_;
+    std::string path_;
+};
+
+} // namespace
+
+/// Reads and writes System state files.
+class StateFile {
+public:
+    static void save(const System& s, const std::string& path);
+    static void load(System& s, const std::string& path);
+
+private:
+    static std::vector<double> settingsKey(const System& s);
+};
+
+std::vector<double> StateFile::settingsKey(const System& s)
+{
+    // Every setting the trajectory depends on (nThreads does not).
+    const Settings& st = s.settings_;
+    std::vector<double> key;
+    key.push_back(static_cast<double>(st.classes.size()));
+    for (const auto& c : st.classes) {
+        key.push_back(c.diameter);
+        key.push_back(c.density);
+    }
+    const ContactSettings& c = st.contact;
+    for (double v : {c.kn, c.kt, c.restitution, c.restitutionWall, c.frictionParticle,
+                     c.frictionWall, st.box.xMin, st.box.xMax, st.box.yMin, st.box.yMax,
+                     st.gravity[0], st.gravity[1], st.dt, s.skin_}) {
+        key.push_back(v);
+    }
+    return key;
+}
+
+void StateFile::save(const System& s, const std::string& path)
+{
+    const std::string tmp = path + ".tmp";
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) throw Error("cannot write state file '" + tmp + "'");
+        Writer w(out);
+        out.write(magic, sizeof(magic));
+        w.value(version);
+        w.array(settingsKey(s));
+        w.value(s.stepCount_);
+        w.value(s.listBuilds_);
+        w.value(static_cast<std::uint8_t>(s.listValid_));
+        w.value(static_cast<std::uint8_t>(s.forcesValid_));
+        w.value(static_cast<std::uint64_t>(s.contactCount_));
+        w.value(s.maxOverlap_);
+        s.p_.forEachArray([&](const auto& a) { w.array(a); });
+        const PairList& pl = s.pairs_;
+        w.array(pl.i); w.array(pl.j); w.array(pl.law); w.array(pl.xiT);
+        w.array(pl.fx); w.array(pl.fy); w.array(pl.ft); w.array(pl.start); w.array(pl.entries);
+        w.array(s.wallContacts_.start); w.array(s.wallContacts_.wall); w.array(s.wallContacts_.xiT);
+        out.write(magic, sizeof(magic));   // end marker
+        out.flush();
+        if (!out) throw Error("cannot write state file '" + tmp + "'");
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        throw Error("cannot rename state file '" + tmp + "' to '" + path + "'");
+    }
+}
+
+void StateFile::load(System& s, const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error("cannot open state file '" + path + "'");
+    Reader r(in, path);
+    char head[sizeof(magic)];
+    in.read(head, sizeof(head));
+    if (!in || std::memcmp(head, magic, sizeof(magic)) != 0) r.fail("wrong file type");
+    const auto fileVersion = r.value<std::uint32_t>();
+    if (fileVersion != version) {
+        r.fail("version " + std::to_string(fileVersion) + ", expected " + std::to_string(version));
+    }
+    std::vector<double> key;
+    r.array(key);
+    const std::vector<double> here = settingsKey(s);
+    if (key != here) {
+        throw Error("state file '" + path + "' was written with other settings (classes, "
+                    "contact, box, gravity, dt or neighbourSkin differ from this Simulation's)");
+    }
+    // Read into a copy so that a bad file leaves the running system untouched.
+    System t = s;
+    t.stepCount_ = r.value<std::int64_t>();
+    t.listBuilds_ = r.value<std::int64_t>();
+    t.listValid_ = r.value<std::uint8_t>() != 0;
+    t.forcesValid_ = r.value<std::uint8_t>() != 0;
+    t.contactCount_ = static_cast<std::size_t>(r.value<std::uint64_t>());
+    t.maxOverlap_ = r.value<double>();
+    t.p_.forEachArray([&](auto& a) { r.array(a); });
+    PairList& pl = t.pairs_;
+    r.array(pl.i); r.array(pl.j); r.array(pl.law); r.array(pl.xiT);
+    r.array(pl.fx); r.array(pl.fy); r.array(pl.ft); r.array(pl.start); r.array(pl.entries);
+    r.array(t.wallContacts_.start); r.array(t.wallContacts_.wall); r.array(t.wallContacts_.xiT);
+    char tail[sizeof(magic)];
+    in.read(tail, sizeof(tail));
+    if (!in || std::memcmp(tail, magic, sizeof(magic)) != 0) r.fail("no end marker");
+
+    // Consistency of the sizes, so that a damaged file cannot index out of range.
+    const std::size_t n = t.p_.size();
+    bool ok = true;
+    t.p_.forEachArray([&](const auto& a) { ok = ok && a.size() == n; });
+    const std::size_t np = pl.i.size();
+    ok = ok && pl.j.size() == np && pl.law.size() == np && pl.xiT.size() == np
+         && pl.fx.size() == np && pl.fy.size() == np && pl.ft.size() == np
+         && pl.entries.size() == 2 * np && (t.listValid_ ? pl.start.size() == n + 1 : true)
+         && t.wallContacts_.wall.size() == t.wallContacts_.xiT.size();
+    for (std::size_t k = 0; ok && k < np; ++k) {
+        ok = pl.i[k] >= 0 && pl.j[k] >= 0 && static_cast<std::size_t>(pl.i[k]) < n
+             && static_cast<std::size_t>(pl.j[k]) < n && pl.law[k] >= 0
+             && pl.law[k] < t.nClasses_ * t.nClasses_;
+    }
+    for (std::size_t i = 0; ok && i < n; ++i) {
+        ok = t.p_.classIndex[i] >= 0 && t.p_.classIndex[i] < t.nClasses_;
+    }
+    if (!ok) r.fail("inconsistent array sizes or indices");
+    s = std::move(t);
+}
+
+void System::save(const std::string& path) const { StateFile::save(*this, path); }
+void System::load(const std::string& path) { StateFile::load(*this, path); }
+
+} // namespace dem

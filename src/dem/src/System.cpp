@@ -1,0 +1,527 @@
+#include "dem/System.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace dem {
+
+namespace {
+
+double smallestDiameter(const Settings& s)
+{
+    double d = INFINITY;
+    for (const auto& c : s.classes) d = std::min(d, c.diameter);
+    return d;
+}
+
+double largestDiameter(const Settings& s)
+{
+    double d = 0.0;
+    for (const auto& c : s.classes) d = std::max(d, c.diameter);
+    return d;
+}
+
+double resolvedSkin(const Settings& s)
+{
+    return s.neighbourSkin >= 0.0 ? s.neighbourSkin : 0.1 * smallestDiameter(s);
+}
+
+const Settings& validated(const Settings& s)
+{
+    validateSettings(s);
+    return s;
+}
+
+using Index = std::ptrdiff_t;   // OpenMP loop index
+
+} // namespace
+
+System::System(const Settings& settings)
+    : settings_(validated(settings)),
+      nClasses_(static_cast<int>(settings.classes.size())),
+      timeStepBound_(dem::timeStepBound(settings)),
+      skin_(resolvedSkin(settings)),
+      walls_(boxWalls(settings.box)),
+      search_(settings.box.xMin, settings.box.xMax, settings.box.yMin, settings.box.yMax,
+              largestDiameter(settings) + resolvedSkin(settings))
+{
+    buildLaws();
+}
+
+void System::buildLaws()
+{
+    constexpr double pi = 3.14159265358979323846;
+    const ContactSettings& c = settings_.contact;
+    std::vector<double> m(nClasses_);
+    for (int k = 0; k < nClasses_; ++k) {
+        const double d = settings_.classes[k].diameter;
+        m[k] = settings_.classes[k].density * pi * d * d * d / 6.0;
+    }
+    pairLaws_.clear();
+    wallLaws_.clear();
+    for (int a = 0; a < nClasses_; ++a) {
+        for (int b = 0; b < nClasses_; ++b) {
+            const double mEff = m[a] * m[b] / (m[a] + m[b]);
+            pairLaws_.push_back(makeContactLaw(mEff, c.kn, c.kt, c.restitution, c.frictionParticle));
+        }
+        wallLaws_.push_back(makeContactLaw(m[a], c.kn, c.kt, c.restitutionWall, c.frictionWall));
+    }
+}
+
+void System::addParticle(int cls, double x, double y, double vx, double vy, double omega)
+{
+    if (cls < 0 || cls >= nClasses_) {
+        throw Error("classIndex = " + std::to_string(cls) + " is outside [0, "
+                    + std::to_string(nClasses_ - 1) + "]");
+    }
+    const double d = settings_.classes[cls].diameter;
+    const double r = 0.5 * d;
+    const double tolerance = 0.01 * d;
+    const Eigen::Vector2d pos(x, y);
+    for (const PlaneWall& w : walls_) {
+        if (!(w.distance(pos) >= r - tolerance)) {
+            const Box& b = settings_.box;
+            throw Error("particle of class '" + settings_.classes[cls].name + "' at ("
+                        + formatValue(x) + ", " + formatValue(y) + ") m is outside the box ["
+                        + formatValue(b.xMin) + ", " + formatValue(b.xMax) + "] x ["
+                        + formatValue(b.yMin) + ", " + formatValue(b.yMax)
+                        + "] m: its disc must lie inside the walls within 1 % of its diameter");
+        }
+    }
+    for (std::size_t k = 0; k < p_.size(); ++k) {
+        const double dx = p_.x[k] - x;
+        const double dy = p_.y[k] - y;
+        const double overlap = r + p_.radius[k] - std::sqrt(dx * dx + dy * dy);
+        const double allowed = 0.01 * std::min(d, p_.diameter[k]);
+        if (overlap > allowed) {
+            throw Error("particle at (" + formatValue(x) + ", " + formatValue(y)
+                        + ") m overlaps particle " + std::to_string(k) + " by "
+                        + formatValue(overlap) + " m, outside [0, " + formatValue(allowed)
+                        + "] m (1 % of the smaller diameter)");
+        }
+    }
+    p_.append(cls, d, settings_.classes[cls].density, x, y, vx, vy, omega);
+    listValid_ = false;
+    forcesValid_ = false;
+}
+
+void System::rebuildNeighbourList()
+{
+    const std::size_t n = p_.size();
+    const int ni = static_cast<int>(n);
+
+    // Old history by particle i (only non-zero entries matter: a zero is a fresh contact).
+    std::vector<int> oldStart(n + 1, 0);
+    for (std::size_t k = 0; k < pairs_.size(); ++k) {
+        if (pairs_.xiT[k] != 0.0) ++oldStart[pairs_.i[k] + 1];
+    }
+    for (std::size_t q = 0; q < n; ++q) oldStart[q + 1] += oldStart[q];
+    std::vector<int> oldPartner(oldStart[n]);
+    std::vector<double> oldXi(oldStart[n]);
+    {
+        std::vector<int> fill(oldStart.begin(), oldStart.end() - 1);
+        for (std::size_t k = 0; k < pairs_.size(); ++k) {
+            if (pairs_.xiT[k] != 0.0) {
+                const int slot = fill[pairs_.i[k]]++;
+                oldPartner[slot] = pairs_.j[k];
+                oldXi[slot] = pairs_.xiT[k];
+            }
+        }
+    }
+
+    search_.findPairs(p_.x.data(), p_.y.data(), p_.radius.data(), n, skin_, found_);
+
+    const std::size_t np = found_.size();
+    pairs_.i.resize(np);
+    pairs_.j.resize(np);
+    pairs_.law.resize(np);
+    pairs_.xiT.resize(np);
+    pairs_.fx.assign(np, 0.0);
+    pairs_.fy.assign(np, 0.0);
+    pairs_.ft.assign(np, 0.0);
+    pairs_.start.assign(n + 1, 0);
+    for (std::size_t k = 0; k < np; ++k) {
+        const int i = found_[k].i;
+        const int j = found_[k].j;
+        pairs_.i[k] = i;
+        pairs_.j[k] = j;
+        pairs_.law[k] = p_.classIndex[i] * nClasses_ + p_.classIndex[j];
+        double xi = 0.0;
+        for (int s = oldStart[i]; s < oldStart[i + 1]; ++s) {
+            if (oldPartner[s] == j) {
+                xi = oldXi[s];
+                break;
+            }
+        }
+        pairs_.xiT[k] = xi;
+        ++pairs_.start[i + 1];
+        ++pairs_.start[j + 1];
+    }
+    for (std::size_t q = 0; q < n; ++q) pairs_.start[q + 1] += pairs_.start[q];
+    pairs_.entries.resize(2 * np);
+    {
+        std::vector<int> fill(pairs_.start.begin(), pairs_.start.end() - 1);
+        for (std::size_t k = 0; k < np; ++k) {
+            const int kk = static_cast<int>(k);
+            pairs_.entries[fill[pairs_.i[k]]++] = 2 * kk;
+            pairs_.entries[fill[pairs_.j[k]]++] = 2 * kk + 1;
+        }
+    }
+
+    // Walls: candidates within radius + skin, history carried over by (particle, wall).
+    WallList next;
+    next.start.assign(n + 1, 0);
+    const bool haveOld = wallContacts_.start.size() == n + 1;
+    for (int i = 0; i < ni; ++i) {
+        const Eigen::Vector2d pos(p_.x[i], p_.y[i]);
+        for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
+            if (walls_[w].distance(pos) < p_.radius[i] + skin_) {
+                double xi = 0.0;
+                if (haveOld) {
+                    for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
+                        if (wallContacts_.wall[s] == w) xi = wallContacts_.xiT[s];
+                    }
+                }
+                next.wall.push_back(w);
+                next.xiT.push_back(xi);
+            }
+        }
+        next.start[i + 1] = static_cast<int>(next.wall.size());
+    }
+    wallContacts_ = std::move(next);
+
+    p_.xRef = p_.x;
+    p_.yRef = p_.y;
+    listValid_ = true;
+    ++listBuilds_;
+}
+
+void System::ensureReady()
+{
+    if (!listValid_) rebuildNeighbourList();
+    if (!forcesValid_) {
+        // First evaluation at the initial state: no history accumulation (dt = 0).
+        computePairForces(0.0);
+        gatherAndKick(0.0, false, false);
+        forcesValid_ = true;
+    }
+}
+
+void System::computePairForces(double historyDt)
+{
+    const Index np = static_cast<Index>(pairs_.size());
+    const int* pi = pairs_.i.data();
+    const int* pj = pairs_.j.data();
+    const int* law = pairs_.law.data();
+    double* xiT = pairs_.xiT.data();
+    double* fx = pairs_.fx.data();
+    double* fy = pairs_.fy.data();
+    double* ft = pairs_.ft.data();
+    const double* x = p_.x.data();
+    const double* y = p_.y.data();
+    const double* vx = p_.vx.data();
+    const double* vy = p_.vy.data();
+    const double* om = p_.omega.data();
+    const double* r = p_.radius.data();
+    const ContactLaw* laws = pairLaws_.data();
+
+    std::size_t touching = 0;
+    double maxOverlap = 0.0;
+#pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
+    reduction(+ : touching) reduction(max : maxOverlap)
+    for (Index k = 0; k < np; ++k) {
+        const int i = pi[k];
+        const int j = pj[k];
+        const double dx = x[j] - x[i];
+        const double dy = y[j] - y[i];
+        const double d2 = dx * dx + dy * dy;
+        const double rSum = r[i] + r[j];
+        if (d2 >= rSum * rSum) {
+            fx[k] = 0.0;
+            fy[k] = 0.0;
+            ft[k] = 0.0;
+            xiT[k] = 0.0;   // separated: the contact's history ends
+            continue;
+        }
+        const double dist = std::sqrt(d2);
+        PairGeometry g;
+        g.overlap = rSum - dist;
+        g.nHat = Eigen::Vector2d(dx, dy) / dist;
+        const Eigen::Vector2d tHat(-g.nHat.y(), g.nHat.x());
+        g.vRel = Eigen::Vector2d(vx[i] - vx[j], vy[i] - vy[j]) + (om[i] * r[i] + om[j] * r[j]) * tHat;
+        g.rI = r[i];
+        g.rJ = r[j];
+        g.xiT = xiT[k];
+        const PairForce f = contactForce(g, laws[law[k]], historyDt);
+        fx[k] = f.force.x();
+        fy[k] = f.force.y();
+        ft[k] = f.torqueI / r[i];
+        xiT[k] = f.xiT;
+        ++touching;
+        maxOverlap = std::max(maxOverlap, g.overlap);
+    }
+    contactCount_ = touching;
+    maxOverlap_ = maxOverlap;
+}
+
+void System::gatherAndKick(double historyDt, bool kick, bool fluid)
+{
+    const Index n = static_cast<Index>(p_.size());
+    const double h = 0.5 * settings_.dt;
+    const double gx = settings_.gravity[0];
+    const double gy = settings_.gravity[1];
+    const double weight = meanWeight_;
+    const int* start = pairs_.start.data();
+    const int* entries = pairs_.entries.data();
+    const double* pfx = pairs_.fx.data();
+    const double* pfy = pairs_.fy.data();
+    const double* pft = pairs_.ft.data();
+    const int* wStart = wallContacts_.start.data();
+    const int* wWall = wallContacts_.wall.data();
+    double* wXi = wallContacts_.xiT.data();
+    const PlaneWall* walls = walls_.data();
+    const ContactLaw* wallLaws = wallLaws_.data();
+    Particles& p = p_;
+
+    std::size_t touching = 0;
+    double maxOverlap = maxOverlap_;
+#pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
+    reduction(+ : touching) reduction(max : maxOverlap)
+    for (Index i = 0; i < n; ++i) {
+        double fx = 0.0, fy = 0.0, ft = 0.0;
+        // Fixed order (the pair list's) whatever the thread count: bitwise reproducible.
+        for (int e = start[i]; e < start[i + 1]; ++e) {
+            const int k = entries[e] >> 1;
+            if (entries[e] & 1) {
+                fx -= pfx[k];
+                fy -= pfy[k];
+            } else {
+                fx += pfx[k];
+                fy += pfy[k];
+            }
+            ft += pft[k];   // torque on either partner is r ft (see contactForce)
+        }
+        const double ri = p.radius[i];
+        double torque = ri * ft;
+        for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
+            const PlaneWall& w = walls[wWall[s]];
+            const Eigen::Vector2d pos(p.x[i], p.y[i]);
+            const double overlap = ri - w.distance(pos);
+            if (overlap <= 0.0) {
+                wXi[s] = 0.0;
+                continue;
+            }
+            PairGeometry g;
+            g.overlap = overlap;
+            g.nHat = -w.nHat;
+            const Eigen::Vector2d tHat(-g.nHat.y(), g.nHat.x());
+            g.vRel = Eigen::Vector2d(p.vx[i], p.vy[i]) + p.omega[i] * ri * tHat;
+            g.rI = ri;
+            g.rJ = 0.0;
+            g.xiT = wXi[s];
+            const PairForce f = contactForce(g, wallLaws[p.classIndex[i]], historyDt);
+            fx += f.force.x();
+            fy += f.force.y();
+            torque += f.torqueI;
+            wXi[s] = f.xiT;
+            ++touching;
+            maxOverlap = std::max(maxOverlap, overlap);
+        }
+        p.fx[i] = fx;
+        p.fy[i] = fy;
+        p.torque[i] = torque;
+        if (!kick) continue;
+
+        const double invM = p.invMass[i];
+        if (fluid) {
+            // Second half-kick with the drag implicit: v = v_half + h (F + K (u - v) + extra)/m.
+            const double K = p.dragCoefficient[i];
+            const double denominator = 1.0 + h * K * invM;
+            const double vxNew = (p.vx[i] + h * ((fx + K * p.gasVx[i] + p.extraFx[i]) * invM + gx))
+                                 / denominator;
+            const double vyNew = (p.vy[i] + h * ((fy + K * p.gasVy[i] + p.extraFy[i]) * invM + gy))
+                                 / denominator;
+            p.vx[i] = vxNew;
+            p.vy[i] = vyNew;
+            p.fluidX[i] = K * (p.gasVx[i] - vxNew) + p.extraFx[i];
+            p.fluidY[i] = K * (p.gasVy[i] - vyNew) + p.extraFy[i];
+            p.meanVx[i] += weight * vxNew;
+            p.meanVy[i] += weight * vyNew;
+        } else {
+            p.vx[i] += h * (fx * invM + gx);
+            p.vy[i] += h * (fy * invM + gy);
+        }
+        p.omega[i] += h * torque * p.invInertia[i];
+    }
+    contactCount_ += touching;
+    maxOverlap_ = maxOverlap;
+}
+
+void System::step(bool fluid)
+{
+    ensureReady();
+    const Index n = static_cast<Index>(p_.size());
+    const double dt = settings_.dt;
+    const double h = 0.5 * dt;
+    const double gx = settings_.gravity[0];
+    const double gy = settings_.gravity[1];
+    const Box& b = settings_.box;
+    Particles& p = p_;
+
+    double maxDisplacement2 = 0.0;
+    int lost = 0;
+#pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
+    reduction(max : maxDisplacement2) reduction(| : lost)
+    for (Index i = 0; i < n; ++i) {
+        const double invM = p.invMass[i];
+        p.vx[i] += h * ((p.fx[i] + p.fluidX[i]) * invM + gx);
+        p.vy[i] += h * ((p.fy[i] + p.fluidY[i]) * invM + gy);
+        p.omega[i] += h * p.torque[i] * p.invInertia[i];
+        p.x[i] += dt * p.vx[i];
+        p.y[i] += dt * p.vy[i];
+        const double dx = p.x[i] - p.xRef[i];
+        const double dy = p.y[i] - p.yRef[i];
+        maxDisplacement2 = std::max(maxDisplacement2, dx * dx + dy * dy);
+        // Written so that NaN counts as lost too.
+        lost |= !(p.x[i] >= b.xMin && p.x[i] <= b.xMax && p.y[i] >= b.yMin && p.y[i] <= b.yMax);
+    }
+    if (lost) throwLostParticle();
+
+    // Rebuild once some particle may have closed half the skin: no contact can be missed.
+    if (4.0 * maxDisplacement2 >= skin_ * skin_) rebuildNeighbourList();
+
+    computePairForces(dt);
+    gatherAndKick(dt, true, fluid);
+    ++stepCount_;
+}
+
+void System::setFluidForceAtCurrentVelocity(bool fluid)
+{
+    Particles& p = p_;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        p.fluidX[i] = fluid ? p.dragCoefficient[i] * (p.gasVx[i] - p.vx[i]) + p.extraFx[i] : 0.0;
+        p.fluidY[i] = fluid ? p.dragCoefficient[i] * (p.gasVy[i] - p.vy[i]) + p.extraFy[i] : 0.0;
+    }
+}
+
+void System::advance(double dtOuter)
+{
+    const double dt = settings_.dt;
+    const double ratio = dtOuter / dt;
+    const double nearest = std::round(ratio);
+    if (!(nearest >= 1.0) || !(std::abs(nearest * dt - dtOuter) <= 1e-9 * dtOuter)) {
+        throw Error("dtOuter = " + formatValue(dtOuter) + " s is outside the positive integer "
+                    "multiples of dt = " + formatValue(dt) + " s (relative tolerance 1e-9)");
+    }
+    const long nSub = static_cast<long>(nearest);
+    ensureReady();
+    setFluidForceAtCurrentVelocity(true);
+
+    // Trapezoidal weights: the drag is evaluated at v(t0), v(t1), ..., v(tn), and the
+    // half-kicks apply the end values for half a sub-step and the inner ones for a whole one.
+    Particles& p = p_;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        p.meanVx[i] = 0.5 * p.vx[i];
+        p.meanVy[i] = 0.5 * p.vy[i];
+    }
+    for (long s = 1; s <= nSub; ++s) {
+        meanWeight_ = s == nSub ? 0.5 : 1.0;
+        step(true);
+    }
+    const double invN = 1.0 / static_cast<double>(nSub);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        p.meanVx[i] *= invN;
+        p.meanVy[i] *= invN;
+        p.meanFluidX[i] = p.dragCoefficient[i] * (p.gasVx[i] - p.meanVx[i]) + p.extraFx[i];
+        p.meanFluidY[i] = p.dragCoefficient[i] * (p.gasVy[i] - p.meanVy[i]) + p.extraFy[i];
+    }
+}
+
+double System::settle(double maxTime, double keTolerance)
+{
+    const std::int64_t first = stepCount_;
+    if (p_.size() == 0) return 0.0;
+    ensureReady();
+    setFluidForceAtCurrentVelocity(false);
+    const double n = static_cast<double>(p_.size());
+    const auto nSteps = static_cast<std::int64_t>(std::ceil(maxTime / settings_.dt - 1e-9));
+    // At rest means below the tolerance and not gaining energy: a packing released from
+    // rest starts below any tolerance and is then accelerating.
+    constexpr int checkEvery = 100;   // 1 ms at dt = 1e-5 s: cheap next to the steps
+    double previous = INFINITY;
+    for (std::int64_t k = 0; k < nSteps; ++k) {
+        if (k % checkEvery == 0) {
+            const double ke = kineticEnergy() / n;
+            if (k > 0 && ke < keTolerance && ke < previous) break;
+            previous = ke;
+        }
+        step(false);
+    }
+    return static_cast<double>(stepCount_ - first) * settings_.dt;
+}
+
+double System::kineticEnergy() const
+{
+    double ke = 0.0;
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+        ke += 0.5 * p_.mass[i] * (p_.vx[i] * p_.vx[i] + p_.vy[i] * p_.vy[i])
+              + 0.5 * p_.omega[i] * p_.omega[i] / p_.invInertia[i];
+    }
+    return ke;
+}
+
+double System::elasticEnergy() const
+{
+    double energy = 0.0;
+    for (std::size_t k = 0; k < pairs_.size(); ++k) {
+        const int i = pairs_.i[k];
+        const int j = pairs_.j[k];
+        const double dx = p_.x[j] - p_.x[i];
+        const double dy = p_.y[j] - p_.y[i];
+        const double overlap = p_.radius[i] + p_.radius[j] - std::sqrt(dx * dx + dy * dy);
+        if (overlap > 0.0) {
+            const ContactLaw& law = pairLaws_[pairs_.law[k]];
+            energy += 0.5 * law.kn * overlap * overlap + 0.5 * law.kt * pairs_.xiT[k] * pairs_.xiT[k];
+        }
+    }
+    for (std::size_t i = 0; i + 1 < wallContacts_.start.size(); ++i) {
+        for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
+            const Eigen::Vector2d pos(p_.x[i], p_.y[i]);
+            const double overlap = p_.radius[i] - walls_[wallContacts_.wall[s]].distance(pos);
+            if (overlap > 0.0) {
+                const ContactLaw& law = wallLaws_[p_.classIndex[i]];
+                energy += 0.5 * law.kn * overlap * overlap
+                          + 0.5 * law.kt * wallContacts_.xiT[s] * wallContacts_.xiT[s];
+            }
+        }
+    }
+    return energy;
+}
+
+std::size_t System::memoryBytes() const
+{
+    std::size_t bytes = p_.memoryBytes() + search_.memoryBytes()
+                        + found_.capacity() * sizeof(IndexPair);
+    auto add = [&](const auto& a) { bytes += a.capacity() * sizeof(a[0]); };
+    add(pairs_.i); add(pairs_.j); add(pairs_.law); add(pairs_.xiT);
+    add(pairs_.fx); add(pairs_.fy); add(pairs_.ft); add(pairs_.start); add(pairs_.entries);
+    add(wallContacts_.start); add(wallContacts_.wall); add(wallContacts_.xiT);
+    return bytes;
+}
+
+void System::throwLostParticle() const
+{
+    const Box& b = settings_.box;
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+        if (!(p_.x[i] >= b.xMin && p_.x[i] <= b.xMax && p_.y[i] >= b.yMin && p_.y[i] <= b.yMax)) {
+            throw Error("particle id " + std::to_string(p_.id[i]) + " left the box at ("
+                        + formatValue(p_.x[i]) + ", " + formatValue(p_.y[i]) + ") m, outside ["
+                        + formatValue(b.xMin) + ", " + formatValue(b.xMax) + "] x ["
+                        + formatValue(b.yMin) + ", " + formatValue(b.yMax) + "] m");
+        }
+    }
+    throw Error("a particle left the box");
+}
+
+} // namespace dem

@@ -1,0 +1,91 @@
+// NBS (Munjiza & Andrews 1998) must find exactly the pairs of the brute-force oracle.
+
+#include "dem/NbsSearch.hpp"
+#include "dem/Random.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+using namespace dem;
+
+namespace {
+
+struct Config {
+    std::vector<double> x, y, r;
+};
+
+/// Random positions (overlaps allowed: the search must not care) of both paper sizes, plus
+/// particles placed on the walls, in the corners and exactly on cell edges.
+Config makeConfig(std::uint64_t seed, int n, double w, double h, double cell)
+{
+    Random random(seed);
+    Config c;
+    auto add = [&](double x, double y, double r) {
+        c.x.push_back(x);
+        c.y.push_back(y);
+        c.r.push_back(r);
+    };
+    for (int k = 0; k < n; ++k) {
+        const double r = random.uniform() < 0.5 ? 0.75e-3 : 1.25e-3;
+        add(random.uniform(r, w - r), random.uniform(r, h - r), r);
+    }
+    for (int k = 0; k < 40; ++k) {
+        const double r = k % 2 ? 0.75e-3 : 1.25e-3;
+        const double s = random.uniform(0.0, 1.0);
+        add(r * 0.99, s * h, r);                         // left wall, slightly overlapping it
+        add(w - r, s * h, r);                            // right wall
+        add(s * w, 0.0, r);                              // on the floor line
+        add(s * w, h, r);                                // on the ceiling line
+        add(std::floor(s * w / cell) * cell, s * h, r);  // on a column edge
+        add(s * w, std::floor(s * h / cell) * cell, r);  // on a row edge
+    }
+    for (double x : {0.0, w}) {
+        for (double y : {0.0, h}) add(x, y, 1.25e-3);   // corners
+    }
+    return c;
+}
+
+std::vector<std::pair<int, int>> sorted(const std::vector<IndexPair>& pairs)
+{
+    std::vector<std::pair<int, int>> s;
+    for (const auto& p : pairs) s.emplace_back(p.i, p.j);
+    std::sort(s.begin(), s.end());
+    return s;
+}
+
+} // namespace
+
+TEST(Nbs, EqualsBruteForceOnSeededConfigurations)
+{
+    // Box widths that are and are not multiples of the cell; margin 0 (contacts) and the
+    // Verlet skin; dense and dilute.
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+        for (double w : {0.15, 0.0437}) {
+            for (int n : {300, 3000}) {
+                for (double margin : {0.0, 1.5e-4}) {
+                    const double h = 0.06;
+                    const double cellMin = 2.5e-3 + margin;
+                    NbsSearch nbs(0.0, w, 0.0, h, cellMin);
+                    const Config c = makeConfig(seed, n, w, h, nbs.mapper().cellWidth());
+                    std::vector<IndexPair> fast, slow;
+                    nbs.findPairs(c.x.data(), c.y.data(), c.r.data(), c.x.size(), margin, fast);
+                    bruteForcePairs(c.x.data(), c.y.data(), c.r.data(), c.x.size(), margin, slow);
+                    ASSERT_FALSE(slow.empty());
+                    EXPECT_EQ(fast.size(), slow.size()) << "seed " << seed << " w " << w << " n " << n;
+                    EXPECT_EQ(sorted(fast), sorted(slow)) << "seed " << seed << " w " << w << " n " << n;
+                }
+            }
+        }
+    }
+}
+
+TEST(Nbs, CellsAreAboutOneLargestDiameter)
+{
+    NbsSearch nbs(0.0, 0.15, 0.0, 0.9, 2.65e-3);
+    EXPECT_EQ(nbs.mapper().nColumns(), 56);
+    EXPECT_GE(nbs.mapper().cellWidth(), 2.65e-3);
+    EXPECT_LT(nbs.mapper().cellWidth(), 1.1 * 2.65e-3);
+    EXPECT_GE(nbs.mapper().cellHeight(), 2.65e-3);
+}

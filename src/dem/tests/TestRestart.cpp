@@ -1,0 +1,141 @@
+// Save -> load -> continue equals an uninterrupted run, and 1 thread equals 2 threads,
+// bit for bit (issue 3).
+
+#include "TestHelpers.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <memory>
+
+using namespace dem;
+using namespace dem::test;
+
+namespace {
+
+const Box box{0.0, 0.03, 0.0, 0.1};
+
+Settings settings(int threads)
+{
+    Settings s = paperSettings(box);
+    s.gravity[1] = -9.81;
+    s.nThreads = threads;
+    return s;
+}
+
+/// A falling, colliding, frictional bed with a drag that varies between CFD steps.
+std::unique_ptr<Simulation> start(int threads)
+{
+    auto sim = std::make_unique<Simulation>(settings(threads));
+    sim->packRandom({300, 100}, {0.0, 0.03, 0.0, 0.06}, 42);
+    return sim;
+}
+
+void cfdStep(Simulation& sim, int step)
+{
+    for (std::size_t i = 0; i < sim.size(); ++i) {
+        sim.dragCoefficient()[i] = 0.5 * sim.mass()[i] / 0.05;
+        sim.gasVelocityX()[i] = 0.05 * std::sin(0.1 * step + sim.y()[i] * 100.0);
+        sim.gasVelocityY()[i] = 0.3;
+        sim.extraForceY()[i] = 1e-6;
+    }
+    sim.advance(1e-4);
+}
+
+bool same(const double* a, const double* b, std::size_t n)
+{
+    return std::memcmp(a, b, n * sizeof(double)) == 0;
+}
+
+void expectIdentical(const Simulation& a, const Simulation& b)
+{
+    ASSERT_EQ(a.size(), b.size());
+    const std::size_t n = a.size();
+    EXPECT_TRUE(same(a.x(), b.x(), n));
+    EXPECT_TRUE(same(a.y(), b.y(), n));
+    EXPECT_TRUE(same(a.vx(), b.vx(), n));
+    EXPECT_TRUE(same(a.vy(), b.vy(), n));
+    EXPECT_TRUE(same(a.omega(), b.omega(), n));
+    EXPECT_TRUE(same(a.meanFluidForceX(), b.meanFluidForceX(), n));
+    EXPECT_TRUE(same(a.meanFluidForceY(), b.meanFluidForceY(), n));
+    EXPECT_EQ(a.stepCount(), b.stepCount());
+    EXPECT_EQ(a.contactCount(), b.contactCount());
+}
+
+} // namespace
+
+TEST(Restart, SaveLoadContinueIsBitwiseIdentical)
+{
+    const std::string path = testing::TempDir() + "demRestart.state";
+    auto whole = start(1);
+    for (int k = 0; k < 600; ++k) {
+        if (k == 300) whole->save(path);
+        cfdStep(*whole, k);
+    }
+    Simulation resumed(settings(1));
+    resumed.load(path);
+    EXPECT_EQ(resumed.stepCount(), 3000);
+    for (int k = 300; k < 600; ++k) cfdStep(resumed, k);
+    EXPECT_GT(whole->contactCount(), 100u);
+    expectIdentical(*whole, resumed);
+    std::remove(path.c_str());
+}
+
+TEST(Restart, OneThreadEqualsTwoThreads)
+{
+    auto one = start(1);
+    auto two = start(2);
+    for (int k = 0; k < 600; ++k) {
+        cfdStep(*one, k);
+        cfdStep(*two, k);
+    }
+    expectIdentical(*one, *two);
+}
+
+TEST(Restart, BadFilesAreNamed)
+{
+    const std::string path = testing::TempDir() + "demBad.state";
+    {
+        std::ofstream out(path);
+        out << "not a state file";
+    }
+    Simulation sim(settings(1));
+    try {
+        sim.load(path);
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    }
+
+    // A state written with other settings.
+    auto other = start(1);
+    other->save(path);
+    Settings s = settings(1);
+    s.dt = 2e-5;
+    Simulation mismatched(s);
+    try {
+        mismatched.load(path);
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("other settings"), std::string::npos) << e.what();
+    }
+
+    // A truncated state.
+    {
+        std::ifstream in(path, std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        std::ofstream out(path, std::ios::binary | std::ios::trunc);
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size() / 2));
+    }
+    try {
+        sim.load(path);
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(sim.size(), 0u);
+    std::remove(path.c_str());
+}

@@ -1,0 +1,128 @@
+// Every bad setting of issue 3 stops with a dem::Error naming the setting, its value and
+// the allowed range.
+
+#include "TestHelpers.hpp"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+
+using namespace dem;
+using namespace dem::test;
+
+namespace {
+
+const Box box{0.0, 0.1, 0.0, 0.1};
+
+/// Runs f, expecting a dem::Error whose message contains every one of `parts`.
+void expectError(const std::function<void()>& f, std::initializer_list<const char*> parts)
+{
+    try {
+        f();
+        ADD_FAILURE() << "no dem::Error";
+    } catch (const Error& e) {
+        for (const char* part : parts) {
+            EXPECT_NE(std::string(e.what()).find(part), std::string::npos)
+                << "'" << part << "' not in: " << e.what();
+        }
+    }
+}
+
+void expectBadSetting(const std::function<void(Settings&)>& change,
+                      std::initializer_list<const char*> parts)
+{
+    Settings s = paperSettings(box);
+    change(s);
+    expectError([&] { Simulation sim(s); }, parts);
+}
+
+} // namespace
+
+TEST(Settings, PaperSettingsAreValid)
+{
+    Simulation sim(paperSettings(box));
+    // Eq. 7 for the 1.5 mm particle: (2 pi/5) sqrt(2525 pi 1.5e-3^3/6 / 800) = 9.385e-5 s.
+    EXPECT_NEAR(sim.timeStepBound(), 9.385e-5, 0.001e-5);
+}
+
+TEST(Settings, BadDiameterDensity)
+{
+    expectBadSetting([](Settings& s) { s.classes[0].diameter = -1e-3; },
+                     {"classes[0]", "small", "diameter", "-0.001", "(0, inf)"});
+    expectBadSetting([](Settings& s) { s.classes[1].diameter = 0.0; }, {"large", "diameter", "(0, inf)"});
+    expectBadSetting([](Settings& s) { s.classes[1].density = 0.0; }, {"large", "density", "(0, inf)"});
+    expectBadSetting([](Settings& s) { s.classes[0].density = -5.0; }, {"density", "-5", "(0, inf)"});
+}
+
+TEST(Settings, BadRestitutionFrictionStiffness)
+{
+    expectBadSetting([](Settings& s) { s.contact.restitution = 1.3; }, {"restitution = 1.3 is outside (0, 1]"});
+    expectBadSetting([](Settings& s) { s.contact.restitution = 0.0; }, {"restitution = 0", "(0, 1]"});
+    expectBadSetting([](Settings& s) { s.contact.restitutionWall = -0.5; }, {"restitutionWall = -0.5", "(0, 1]"});
+    expectBadSetting([](Settings& s) { s.contact.frictionParticle = -0.1; }, {"frictionParticle = -0.1", "[0, inf)"});
+    expectBadSetting([](Settings& s) { s.contact.frictionWall = -1.0; }, {"frictionWall = -1", "[0, inf)"});
+    expectBadSetting([](Settings& s) { s.contact.kn = 0.0; }, {"kn = 0", "(0, inf)"});
+    expectBadSetting([](Settings& s) { s.contact.kt = 0.0; }, {"kt = 0", "(0, inf)"});
+}
+
+TEST(Settings, EmptyClassesBoxThreads)
+{
+    expectBadSetting([](Settings& s) { s.classes.clear(); }, {"classes", "empty"});
+    expectBadSetting([](Settings& s) { s.box.xMax = -1.0; }, {"box.xMax = -1", "box.xMin"});
+    expectBadSetting([](Settings& s) { s.nThreads = 0; }, {"nThreads = 0", "[1, inf)"});
+    expectBadSetting([](Settings& s) { s.dt = 0.0; }, {"dt = 0", "(0, inf)"});
+}
+
+TEST(Settings, TimeStepAboveBoundNamesBoundAndSmallestParticle)
+{
+    expectBadSetting([](Settings& s) { s.dt = 1e-4; },
+                     {"dt = 0.0001", "time-step bound", "9.38495e-05", "small", "0.0015"});
+    // The smallest particle is the lightest: make the large class light.
+    expectBadSetting(
+        [](Settings& s) {
+            s.classes[1].density = 10.0;
+            s.dt = 5e-5;
+        },
+        {"time-step bound", "large", "0.0025"});
+}
+
+TEST(Settings, ParticlesOutsideWallsOrOverlapping)
+{
+    Simulation sim(paperSettings(box));
+    expectError([&] { sim.addParticle(0, -0.01, 0.05); }, {"outside the box", "-0.01"});
+    expectError([&] { sim.addParticle(0, 0.0005, 0.05); }, {"outside the box"});   // disc through the wall
+    sim.addParticle(0, 0.00075, 0.05);   // touching the wall: fine
+    sim.addParticle(1, 0.05, 0.05);
+    expectError([&] { sim.addParticle(0, 0.0515, 0.05); }, {"overlaps particle 1", "1 % of the smaller diameter"});
+    sim.addParticle(0, 0.05 + 2.0e-3 - 1.0e-5, 0.05);   // 0.67 % of 1.5 mm: tolerated
+    expectError([&] { sim.addParticle(2, 0.02, 0.02); }, {"classIndex = 2", "[0, 1]"});
+}
+
+TEST(Settings, PackingEmptyClassAndRegion)
+{
+    Simulation sim(paperSettings(box));
+    expectError([&] { sim.packRandom({10, 0}, box, 1); }, {"countPerClass[1]", "large", "= 0", "[1, inf)", "empty size class"});
+    expectError([&] { sim.packRandom({10}, box, 1); }, {"countPerClass", "one per size class"});
+    expectError([&] { sim.packRandom({10, 10}, {0.0, 0.2, 0.0, 0.1}, 1); }, {"region", "outside the box"});
+    expectError([&] { sim.packRandom({100000, 10}, {0.0, 0.01, 0.0, 0.01}, 1); }, {"no room", "small"});
+}
+
+TEST(Settings, AdvanceNeedsIntegerSubSteps)
+{
+    Simulation sim(paperSettings(box));
+    sim.addParticle(0, 0.05, 0.05);
+    expectError([&] { sim.advance(1.5e-5); }, {"dtOuter = 1.5e-05", "dt = 1e-05", "integer"});
+    sim.advance(1e-4);
+    EXPECT_EQ(sim.stepCount(), 10);
+}
+
+TEST(Settings, LostParticleIsNamed)
+{
+    Settings s = paperSettings(box);
+    Simulation sim(s);
+    sim.addParticle(0, 0.05, 0.05);
+    sim.addParticle(1, 0.02, 0.05);
+    sim.gasVelocityX()[1] = -1e6;   // a silly gas velocity shoots particle 1 through the wall
+    sim.dragCoefficient()[1] = 1.0;
+    expectError([&] { sim.advance(1e-4); }, {"particle id 1", "left the box"});
+}
