@@ -165,8 +165,10 @@ def write_xdmf(case):
 
 
 def read_dat(path):
-    """Columns of a whitespace table whose first '#' line names them
-    (laceyIndex.dat, segregation.dat): dict name -> numpy array."""
+    """Columns of a whitespace table (laceyIndex.dat, segregation.dat):
+    dict name -> numpy array. The column names are the last '#' line before
+    the first row of numbers (OpenFOAM's writeFile may put other comment
+    lines above it)."""
     names = None
     rows = []
     with open(path) as f:
@@ -175,7 +177,7 @@ def read_dat(path):
             if not s:
                 continue
             if s.startswith("#"):
-                if names is None:
+                if not rows:
                     names = s.lstrip("#").split()
                 continue
             rows.append([float(v) for v in s.split()])
