@@ -103,6 +103,10 @@ int main(int argc, char *argv[])
 
         timers.start();
         particles.writeParticlesIfDue();
+        if (runTime.writeTime())
+        {
+            particles.reportBalance(Info);
+        }
         runTime.write();
         timers.stop(solverTimers::output);
 

@@ -7,6 +7,9 @@
 #include "zeroGradientFvPatchFields.H"
 #include "mathematicalConstants.H"
 
+#include <fstream>
+#include <sstream>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -184,6 +187,13 @@ void Foam::dpmCloud::initialise(const bool postProcess)
     }
 
     const dictionary& bed = dict_.subDict("initialBed");
+    if (bed.found("positions"))
+    {
+        const fileName file = bed.get<fileName>("positions").expand();
+        readPositions(file);
+        Info<< "Particles: " << size() << " placed from " << file << endl;
+        return;
+    }
     if (bed.found("file"))
     {
         const fileName file = bed.get<fileName>("file").expand();
@@ -236,6 +246,42 @@ void Foam::dpmCloud::initialise(const bool postProcess)
 }
 
 
+void Foam::dpmCloud::readPositions(const fileName& file)
+{
+    std::ifstream is(file);
+    if (!is.good())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Cannot read initialBed/positions " << file << " of "
+            << dict_.name() << exit(FatalIOError);
+    }
+    std::string line;
+    label lineNo = 0;
+    while (std::getline(is, line))
+    {
+        ++lineNo;
+        const auto hash = line.find('#');
+        if (hash != std::string::npos) line.erase(hash);
+        std::istringstream fields(line);
+        label classIndex;
+        scalar x, y;
+        if (!(fields >> classIndex >> x >> y)) continue;
+        if (classIndex < 0 || classIndex >= classNames_.size())
+        {
+            FatalIOErrorInFunction(dict_)
+                << file << " line " << lineNo << ": class " << classIndex
+                << " is outside [0, " << classNames_.size() - 1 << "]"
+                << exit(FatalIOError);
+        }
+        guarded
+        (
+            "Cannot place a particle of initialBed/positions",
+            [&]{ dem_->addParticle(classIndex, x, y); }
+        );
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dpmCloud::dpmCloud
@@ -275,6 +321,7 @@ Foam::dpmCloud::dpmCloud
     g_(g),
     classNames_(dict_.subDict("classes").toc()),
     drag_(dragModel::New(dict_, gas.rho(), gas.mu())),
+    frozen_(dict_.lookupOrDefault<bool>("frozen", false)),
     writeInterval_(positiveEntry(dict_, "writeInterval", 0.01)),
     voidageMin_(readVoidageMin(dict_)),
     overlapStart_(),
@@ -290,6 +337,13 @@ Foam::dpmCloud::dpmCloud
         fieldIO("porosity2D", mesh, false),
         mesh,
         dimensionedScalar("one", dimless, 1.0),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    particleFraction_
+    (
+        fieldIO("particleFraction", mesh, false),
+        mesh,
+        dimensionedScalar("zero", dimless, 0.0),
         zeroGradientFvPatchScalarField::typeName
     ),
     Kc_
@@ -427,7 +481,10 @@ void Foam::dpmCloud::interpolateGas(const volVectorField& U)
     const double* vy = dem_->vy();
     const double* d = dem_->diameter();
 
-    scalarField epsP(n), dP(n), slip(n);
+    scalarField& epsP = voidageP_;
+    epsP.setSize(n);
+    gasVelocityP_.setSize(n);
+    scalarField dP(n), slip(n);
     double* uX = dem_->gasVelocityX();
     double* uY = dem_->gasVelocityY();
     for (label i = 0; i < n; ++i)
@@ -443,6 +500,7 @@ void Foam::dpmCloud::interpolateGas(const volVectorField& U)
             u += w[k]*Uc[cells[k]];
         }
         epsP[i] = e;
+        gasVelocityP_[i] = u;
         dP[i] = d[i];
         uX[i] = u.x();
         uY[i] = u.y();
@@ -469,8 +527,36 @@ void Foam::dpmCloud::interpolateGas(const volVectorField& U)
 
 void Foam::dpmCloud::advance()
 {
+    if (frozen_)
+    {
+        // A fixed bed: the fluid force at the particles' (zero) velocity
+        const label n = size();
+        frozenForce_.setSize(n);
+        for (label i = 0; i < n; ++i)
+        {
+            frozenForce_[i] = vector
+            (
+                K_[i]*(dem_->gasVelocityX()[i] - dem_->vx()[i])
+              + dem_->extraForceX()[i],
+                K_[i]*(dem_->gasVelocityY()[i] - dem_->vy()[i])
+              + dem_->extraForceY()[i],
+                0
+            );
+        }
+        return;
+    }
+
     const scalar dtGas = mesh_.time().deltaTValue();
     guarded("The particles cannot advance", [&]{ dem_->advance(dtGas); });
+}
+
+
+Foam::vector Foam::dpmCloud::fluidForce(const label i) const
+{
+    return
+        frozen_
+      ? frozenForce_[i]
+      : vector(dem_->meanFluidForceX()[i], dem_->meanFluidForceY()[i], 0);
 }
 
 
@@ -484,16 +570,15 @@ void Foam::dpmCloud::mapToGas()
     vectorField& Fp = Fp_.primitiveFieldRef();
     Kc = 0;
     Fp = Zero;
-    const double* FX = dem_->meanFluidForceX();
-    const double* FY = dem_->meanFluidForceY();
     for (label i = 0; i < n; ++i)
     {
+        const vector F = fluidForce(i);
         for (label k = overlapStart_[i]; k < overlapStart_[i + 1]; ++k)
         {
             const label c = overlapCells_[k];
             const scalar f = overlapFraction_[k]/Vc;
             Kc[c] += f*K_[i];
-            Fp[c] += vector(f*FX[i], f*FY[i], 0);
+            Fp[c] += f*F;
         }
     }
     Kc_.correctBoundaryConditions();
@@ -512,7 +597,10 @@ void Foam::dpmCloud::updateVoidage()
     const double* d = dem_->diameter();
 
     scalarField& porosity = porosity2D_.primitiveFieldRef();
+    scalarField& phiP = particleFraction_.primitiveFieldRef();
     porosity = 1;
+    phiP = 0;
+    const scalar Vc = grid_.cellVolume();
 
     overlapStart_.setSize(n + 1);
     overlapCells_.clear();
@@ -522,12 +610,14 @@ void Foam::dpmCloud::updateVoidage()
     {
         const scalar r = 0.5*d[i];
         const scalar discArea = constant::mathematical::pi*r*r;
+        const scalar VpByVc = discArea*4*r/(3*Vc);
         grid_.forEachDiscOverlap
         (
             x[i], y[i], r,
             [&](const label c, const scalar area)
             {
                 porosity[c] -= area/cellArea;
+                phiP[c] += VpByVc*area/discArea;
                 overlapCells_.append(c);
                 overlapFraction_.append(area/discArea);
             }
@@ -541,6 +631,7 @@ void Foam::dpmCloud::updateVoidage()
         eps[c] = max(fluidization::voidage3D(porosity[c]), voidageMin_);
     }
     porosity2D_.correctBoundaryConditions();
+    particleFraction_.correctBoundaryConditions();
     voidage_.correctBoundaryConditions();
 }
 
@@ -559,7 +650,32 @@ void Foam::dpmCloud::writeParticlesIfDue()
 
 void Foam::dpmCloud::writeParticles()
 {
-    writer_->write(*dem_, mesh_.time().value(), mesh_.time().timeName());
+    writer_->write
+    (
+        *dem_, voidageP_, gasVelocityP_,
+        mesh_.time().value(), mesh_.time().timeName()
+    );
+}
+
+
+void Foam::dpmCloud::reportBalance(Ostream& os) const
+{
+    vector particleForce = Zero;
+    scalar particleArea = 0;
+    for (label i = 0; i < size(); ++i)
+    {
+        if (K_.size() == size()) particleForce += fluidForce(i);
+        const scalar d = dem_->diameter()[i];
+        particleArea += constant::mathematical::pi*d*d/4;
+    }
+    const vector gasForce = gSum(Fp_.primitiveField())*grid_.cellVolume();
+    const scalar mappedArea =
+        gSum(1 - porosity2D_.primitiveField())*grid_.dx()*grid_.dy();
+
+    os  << "Exchange: force on particles " << particleForce
+        << " N, reaction mapped to the gas " << gasForce << " N" << nl
+        << "Exchange: particle area " << particleArea
+        << " m2, mapped to cells " << mappedArea << " m2" << endl;
 }
 
 

@@ -76,6 +76,8 @@ Foam::particleWriter::particleWriter
 void Foam::particleWriter::write
 (
     const dem::Simulation& particles,
+    const scalarField& voidage,
+    const vectorField& gasVelocity,
     const scalar t,
     const word& timeName
 )
@@ -124,6 +126,17 @@ void Foam::particleWriter::write
     writeDataset(h5, "diameter", H5T_NATIVE_FLOAT, diameter, n, 1);
     writeDataset(h5, "class", H5T_NATIVE_SCHAR, classIndex, n, 1);
     writeDataset(h5, "id", H5T_NATIVE_INT, id, n, 1);
+    if (voidage.size() == label(n) && gasVelocity.size() == label(n))
+    {
+        std::vector<float> eps(n), u(3*n);
+        for (hsize_t i = 0; i < n; ++i)
+        {
+            eps[i] = float(voidage[i]);
+            for (int k = 0; k < 3; ++k) u[3*i + k] = float(gasVelocity[i][k]);
+        }
+        writeDataset(h5, "voidage", H5T_NATIVE_FLOAT, eps, n, 1);
+        writeDataset(h5, "gasVelocity", H5T_NATIVE_FLOAT, u, n, 3);
+    }
 
     if (H5Fclose(h5) < 0 || std::rename(partial.c_str(), final.c_str()) != 0)
     {
