@@ -14,7 +14,7 @@ namespace dem {
 namespace {
 
 constexpr char magic[16] = "dpmFoam2D-dem\n";
-constexpr std::uint32_t version = 1;
+constexpr std::uint32_t version = 2;
 
 class Writer {
 public:
@@ -129,7 +129,7 @@ void StateFile::save(const System& s, const std::string& path)
         s.p_.forEachArray([&](const auto& a) { w.array(a); });
         const PairList& pl = s.pairs_;
         w.array(pl.i); w.array(pl.j); w.array(pl.law); w.array(pl.xiT);
-        w.array(pl.fx); w.array(pl.fy); w.array(pl.ft); w.array(pl.start); w.array(pl.entries);
+        w.array(pl.force); w.array(pl.start); w.array(pl.entries);
         w.array(s.wallContacts_.start); w.array(s.wallContacts_.wall); w.array(s.wallContacts_.xiT);
         out.write(magic, sizeof(magic));   // end marker
         out.flush();
@@ -170,7 +170,7 @@ void StateFile::load(System& s, const std::string& path)
     t.p_.forEachArray([&](auto& a) { r.array(a); });
     PairList& pl = t.pairs_;
     r.array(pl.i); r.array(pl.j); r.array(pl.law); r.array(pl.xiT);
-    r.array(pl.fx); r.array(pl.fy); r.array(pl.ft); r.array(pl.start); r.array(pl.entries);
+    r.array(pl.force); r.array(pl.start); r.array(pl.entries);
     r.array(t.wallContacts_.start); r.array(t.wallContacts_.wall); r.array(t.wallContacts_.xiT);
     char tail[sizeof(magic)];
     in.read(tail, sizeof(tail));
@@ -182,7 +182,7 @@ void StateFile::load(System& s, const std::string& path)
     t.p_.forEachArray([&](const auto& a) { ok = ok && a.size() == n; });
     const std::size_t np = pl.i.size();
     ok = ok && pl.j.size() == np && pl.law.size() == np && pl.xiT.size() == np
-         && pl.fx.size() == np && pl.fy.size() == np && pl.ft.size() == np
+         && pl.force.size() == np
          && pl.entries.size() == 2 * np && (t.listValid_ ? pl.start.size() == n + 1 : true)
          && t.wallContacts_.wall.size() == t.wallContacts_.xiT.size();
     for (std::size_t k = 0; ok && k < np; ++k) {

@@ -137,9 +137,7 @@ void System::rebuildNeighbourList()
     pairs_.j.resize(np);
     pairs_.law.resize(np);
     pairs_.xiT.resize(np);
-    pairs_.fx.assign(np, 0.0);
-    pairs_.fy.assign(np, 0.0);
-    pairs_.ft.assign(np, 0.0);
+    pairs_.force.assign(np, StoredForce{0.0, 0.0, 0.0});
     pairs_.start.assign(n + 1, 0);
     for (std::size_t k = 0; k < np; ++k) {
         const int i = found_[k].i;
@@ -215,9 +213,7 @@ void System::computePairForces(double historyDt)
     const int* pj = pairs_.j.data();
     const int* law = pairs_.law.data();
     double* xiT = pairs_.xiT.data();
-    double* fx = pairs_.fx.data();
-    double* fy = pairs_.fy.data();
-    double* ft = pairs_.ft.data();
+    StoredForce* force = pairs_.force.data();
     const double* x = p_.x.data();
     const double* y = p_.y.data();
     const double* vx = p_.vx.data();
@@ -238,25 +234,22 @@ void System::computePairForces(double historyDt)
         const double d2 = dx * dx + dy * dy;
         const double rSum = r[i] + r[j];
         if (d2 >= rSum * rSum) {
-            fx[k] = 0.0;
-            fy[k] = 0.0;
-            ft[k] = 0.0;
+            force[k] = StoredForce{0.0, 0.0, 0.0};
             xiT[k] = 0.0;   // separated: the contact's history ends
             continue;
         }
         const double dist = std::sqrt(d2);
+        const double invDist = 1.0 / dist;
         PairGeometry g;
         g.overlap = rSum - dist;
-        g.nHat = Eigen::Vector2d(dx, dy) / dist;
+        g.nHat = Eigen::Vector2d(dx * invDist, dy * invDist);
         const Eigen::Vector2d tHat(-g.nHat.y(), g.nHat.x());
         g.vRel = Eigen::Vector2d(vx[i] - vx[j], vy[i] - vy[j]) + (om[i] * r[i] + om[j] * r[j]) * tHat;
         g.rI = r[i];
         g.rJ = r[j];
         g.xiT = xiT[k];
         const PairForce f = contactForce(g, laws[law[k]], historyDt);
-        fx[k] = f.force.x();
-        fy[k] = f.force.y();
-        ft[k] = f.torqueI / r[i];
+        force[k] = StoredForce{f.force.x(), f.force.y(), f.ft};
         xiT[k] = f.xiT;
         ++touching;
         maxOverlap = std::max(maxOverlap, g.overlap);
@@ -274,9 +267,7 @@ void System::gatherAndKick(double historyDt, bool kick, bool fluid)
     const double weight = meanWeight_;
     const int* start = pairs_.start.data();
     const int* entries = pairs_.entries.data();
-    const double* pfx = pairs_.fx.data();
-    const double* pfy = pairs_.fy.data();
-    const double* pft = pairs_.ft.data();
+    const StoredForce* force = pairs_.force.data();
     const int* wStart = wallContacts_.start.data();
     const int* wWall = wallContacts_.wall.data();
     double* wXi = wallContacts_.xiT.data();
@@ -292,15 +283,11 @@ void System::gatherAndKick(double historyDt, bool kick, bool fluid)
         double fx = 0.0, fy = 0.0, ft = 0.0;
         // Fixed order (the pair list's) whatever the thread count: bitwise reproducible.
         for (int e = start[i]; e < start[i + 1]; ++e) {
-            const int k = entries[e] >> 1;
-            if (entries[e] & 1) {
-                fx -= pfx[k];
-                fy -= pfy[k];
-            } else {
-                fx += pfx[k];
-                fy += pfy[k];
-            }
-            ft += pft[k];   // torque on either partner is r ft (see contactForce)
+            const StoredForce& f = force[entries[e] >> 1];
+            const double sign = (entries[e] & 1) ? -1.0 : 1.0;   // j receives -F
+            fx += sign * f.fx;
+            fy += sign * f.fy;
+            ft += f.ft;   // torque on either partner is r ft (see contactForce)
         }
         const double ri = p.radius[i];
         double torque = ri * ft;
@@ -505,7 +492,7 @@ std::size_t System::memoryBytes() const
                         + found_.capacity() * sizeof(IndexPair);
     auto add = [&](const auto& a) { bytes += a.capacity() * sizeof(a[0]); };
     add(pairs_.i); add(pairs_.j); add(pairs_.law); add(pairs_.xiT);
-    add(pairs_.fx); add(pairs_.fy); add(pairs_.ft); add(pairs_.start); add(pairs_.entries);
+    add(pairs_.force); add(pairs_.start); add(pairs_.entries);
     add(wallContacts_.start); add(wallContacts_.wall); add(wallContacts_.xiT);
     return bytes;
 }

@@ -24,6 +24,7 @@ struct PairForce {
     Eigen::Vector2d force;   ///< on i (j receives -force), N
     double torqueI;          ///< about z on i, N m
     double torqueJ;          ///< about z on j, N m
+    double ft;               ///< tangential force along tHat on i, N
     double xiT;              ///< updated tangential displacement, m
 };
 
@@ -59,6 +60,7 @@ inline PairForce contactForce(const PairGeometry& g, const ContactLaw& law, doub
     // T = (r nHat) x (ft tHat) = r ft ez for both partners (nHat x tHat = ez).
     out.torqueI = g.rI * ft;
     out.torqueJ = g.rJ * ft;
+    out.ft = ft;
     out.xiT = xiT;
     return out;
 }

@@ -8,14 +8,19 @@
 
 namespace dem {
 
+/// Force of one pair from the last evaluation, stored together for the gather.
+struct StoredForce {
+    double fx, fy;   ///< on i (j receives the opposite), N
+    double ft;       ///< tangential force along tHat; torque on either partner is r ft, N
+};
+
 /// Particle-particle candidates (i < j) as arrays; a candidate keeps its tangential
 /// history while it touches and has it reset to zero when it separates.
 struct PairList {
     std::vector<int> i, j;
     std::vector<int> law;          ///< index into the pair-law table
     std::vector<double> xiT;       ///< tangential spring displacement, m (history)
-    std::vector<double> fx, fy;    ///< force on i of the last evaluation, N
-    std::vector<double> ft;        ///< tangential force (torque / lever arm), N
+    std::vector<StoredForce> force;   ///< of the last evaluation
     /// Gather index: particle p's pairs are entries[start[p] .. start[p+1]), each
     /// 2 * pair + (0 if p is i, 1 if p is j), in pair order.
     std::vector<int> start, entries;
