@@ -78,10 +78,11 @@ TEST(SettledBed, PaperBedSettlesDenseAndAtRest)
     EXPECT_LT(meanOverlap, 0.01 * dSmall);
     EXPECT_LT(maxOverlap, 0.03 * dSmall);
     EXPECT_LT(maxFloorOverlap, 0.03 * dSmall);
-    // At rest the floor carries the weight, less what wall friction holds (Janssen: small
-    // for a bed as tall as it is wide with mu_w = 0.1): 80-100 %.
-    EXPECT_GT(floorForce, 0.8 * weight);
-    EXPECT_LT(floorForce, 1.0 * weight);
+    // At rest the floor carries the weight, give or take what wall friction holds (Janssen:
+    // small for a bed as tall as it is wide with mu_w = 0.1; its sign depends on how the
+    // bed settled) and the residual vibration of the springs: 80-105 %.
+    EXPECT_GT(floorForce, 0.80 * weight);
+    EXPECT_LT(floorForce, 1.05 * weight);
 
     // Packing fraction against 2D random close packing of bidisperse discs, 0.82-0.84
     // (O'Hern et al. 2003, PRE 68 011306); the paper's settled bed is "about 0.15 m"
