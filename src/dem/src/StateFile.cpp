@@ -193,6 +193,21 @@ void StateFile::load(System& s, const std::string& path)
     for (std::size_t i = 0; ok && i < n; ++i) {
         ok = t.p_.classIndex[i] >= 0 && t.p_.classIndex[i] < t.nClasses_;
     }
+    for (std::size_t e = 0; ok && e < pl.entries.size(); ++e) {
+        ok = pl.entries[e] >= 0 && static_cast<std::size_t>(pl.entries[e]) < 2 * np;
+    }
+    auto monotone = [](const std::vector<int>& start, std::size_t last) {
+        for (std::size_t q = 0; q + 1 < start.size(); ++q) {
+            if (start[q] < 0 || start[q] > start[q + 1]) return false;
+        }
+        return start.empty() || static_cast<std::size_t>(start.back()) == last;
+    };
+    const WallList& wl = t.wallContacts_;
+    ok = ok && monotone(pl.start, 2 * np) && monotone(wl.start, wl.wall.size())
+         && (!t.listValid_ || wl.start.size() == n + 1);
+    for (std::size_t s2 = 0; ok && s2 < wl.wall.size(); ++s2) {
+        ok = wl.wall[s2] >= 0 && static_cast<std::size_t>(wl.wall[s2]) < t.walls_.size();
+    }
     if (!ok) r.fail("inconsistent array sizes or indices");
     s = std::move(t);
 }
