@@ -57,12 +57,15 @@ int main(int argc, char *argv[])
     #include "createFields.H"
     #include "createInletVelocity.H"
 
-    // The initial state: the first particle file and the restart state
+    // The initial state: the restart state and the first particle file
     if (!isFile(runTime.timePath()/"uniform"/"dem.state"))
     {
         particles.write();
     }
-    particles.writeParticlesIfDue();
+    if (!isFile(runTime.path()/"particles"/runTime.timeName() + ".h5"))
+    {
+        particles.writeParticlesIfDue();
+    }
 
     solverTimers timers(runTime);
 

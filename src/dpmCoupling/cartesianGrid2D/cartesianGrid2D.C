@@ -35,6 +35,17 @@ Foam::cartesianGrid2D::cartesianGrid2D(const fvMesh& mesh)
             dx_ = span.x();
             dy_ = span.y();
         }
+        if (span.z() < (1 - tol)*depth_)
+        {
+            FatalErrorInFunction
+                << "The mesh of " << mesh.time().path()
+                << " is not a 2D mesh one cell thick in z: cell " << celli
+                << " is " << span.z() << " m thick, the mesh " << depth_
+                << " m" << nl
+                << "    dpmFoam2D needs the bed in the x-y plane with the front"
+                << " and back patches of type empty (blockMesh: n = (nx ny 1))."
+                << exit(FatalError);
+        }
         const bool sameSize =
             mag(span.x() - dx_) < tol*dx_ && mag(span.y() - dy_) < tol*dy_;
         const bool isBox =

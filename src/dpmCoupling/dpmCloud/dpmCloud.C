@@ -382,6 +382,7 @@ Foam::dpmCloud::dpmCloud
         [&]{ dem_.reset(new dem::Simulation(settings)); }
     );
 
+    subSteps();         // the DEM step must divide the CFD step
     initialise(postProcess);
 
     writer_.reset
@@ -393,6 +394,10 @@ Foam::dpmCloud::dpmCloud
     );
 
     updateVoidage();
+
+    // Keep the start voidage as the old-time level of the first step, as a
+    // run that went through this time would (restarts continue exactly)
+    voidage_.oldTime();
 }
 
 
@@ -504,7 +509,8 @@ void Foam::dpmCloud::interpolateGas(const volVectorField& U)
         dP[i] = d[i];
         uX[i] = u.x();
         uY[i] = u.y();
-        slip[i] = std::hypot(u.x() - vx[i], u.y() - vy[i]);
+        slip[i] =
+            frozen_ ? mag(u) : std::hypot(u.x() - vx[i], u.y() - vy[i]);
     }
 
     K_.setSize(n);
@@ -529,17 +535,15 @@ void Foam::dpmCloud::advance()
 {
     if (frozen_)
     {
-        // A fixed bed: the fluid force at the particles' (zero) velocity
+        // A fixed bed: the fluid force on particles held at rest
         const label n = size();
         frozenForce_.setSize(n);
         for (label i = 0; i < n; ++i)
         {
             frozenForce_[i] = vector
             (
-                K_[i]*(dem_->gasVelocityX()[i] - dem_->vx()[i])
-              + dem_->extraForceX()[i],
-                K_[i]*(dem_->gasVelocityY()[i] - dem_->vy()[i])
-              + dem_->extraForceY()[i],
+                K_[i]*dem_->gasVelocityX()[i] + dem_->extraForceX()[i],
+                K_[i]*dem_->gasVelocityY()[i] + dem_->extraForceY()[i],
                 0
             );
         }
