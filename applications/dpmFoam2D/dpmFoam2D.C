@@ -52,6 +52,7 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
+    Sout.precision(8);      // a readable log; fields keep writePrecision
     #include "createMesh.H"
     #include "createControl.H"
     #include "createFields.H"

@@ -717,8 +717,13 @@ bool Foam::dpmCloud::writeObject
     const bool
 ) const
 {
-    const fileName file = stateFile(mesh_.time().timeName());
+    save(stateFile(mesh_.time().timeName()));
+    return true;
+}
+
+
+void Foam::dpmCloud::save(const fileName& file) const
+{
     mkDir(file.path());
     guarded("Cannot write the particle state", [&]{ dem_->save(file); });
-    return true;
 }
