@@ -13,8 +13,14 @@ Description
     in their constant/particleProperties. Also writes the bed's particle
     file (particles/<startTime>.h5) for a look in ParaView.
 
+    A case whose initialBed names a file that does not exist yet packs,
+    settles and saves the bed itself when it starts; dpmPackBed does it
+    ahead of time (and always anew).
+
 Usage
-    dpmPackBed [-output <file>]     (default constant/packedBed.state)
+    dpmPackBed [-output <file>]
+    (default: initialBed/file of constant/particleProperties, else
+    constant/packedBed.state)
 
 \*---------------------------------------------------------------------------*/
 
@@ -34,7 +40,8 @@ int main(int argc, char *argv[])
     (
         "output",
         "file",
-        "Where to save the bed (default constant/packedBed.state)"
+        "Where to save the bed (default initialBed/file, else"
+        " constant/packedBed.state)"
     );
 
     #include "setRootCase.H"
@@ -43,13 +50,25 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
     #include "readGravitationalAcceleration.H"
 
-    const fileName output
+    gasProperties gas(mesh);
+    dpmCloud particles
     (
-        args.opt<fileName>("output", runTime.constant()/"packedBed.state")
+        "particles", mesh, gas, g.value(), dpmCloud::startMode::pack
     );
 
-    gasProperties gas(mesh);
-    dpmCloud particles("particles", mesh, gas, g.value());
+    // Where to save: -output, else initialBed/file, else constant/
+    const dictionary& bed =
+        mesh.lookupObject<IOdictionary>("particleProperties")
+       .subDict("initialBed");
+    const fileName output
+    (
+        args.found("output")
+      ? args.get<fileName>("output")
+      : bed.lookupOrDefault<fileName>
+        (
+            "file", runTime.constant()/"packedBed.state"
+        ).expand()
+    );
     particles.report(Info);
 
     particles.save(output);

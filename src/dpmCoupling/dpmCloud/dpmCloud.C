@@ -170,16 +170,16 @@ std::vector<int> Foam::dpmCloud::classCounts() const
 }
 
 
-void Foam::dpmCloud::initialise(const bool postProcess)
+void Foam::dpmCloud::initialise(const startMode mode)
 {
     const fileName restart = stateFile(mesh_.time().timeName());
-    if (isFile(restart))
+    if (mode != startMode::pack && isFile(restart))
     {
         guarded("Cannot read the particle state", [&]{ dem_->load(restart); });
         Info<< "Particles: " << size() << " read from " << restart << endl;
         return;
     }
-    if (postProcess)
+    if (mode == startMode::postProcess)
     {
         FatalErrorInFunction
             << "No particle state " << restart << " for time "
@@ -187,18 +187,19 @@ void Foam::dpmCloud::initialise(const bool postProcess)
     }
 
     const dictionary& bed = dict_.subDict("initialBed");
-    if (bed.found("positions"))
+    if (mode != startMode::pack && bed.found("positions"))
     {
         const fileName file = bed.get<fileName>("positions").expand();
         readPositions(file);
         Info<< "Particles: " << size() << " placed from " << file << endl;
         return;
     }
-    if (bed.found("file"))
+    const fileName bedFile =
+        bed.found("file") ? bed.get<fileName>("file").expand() : fileName();
+    if (mode != startMode::pack && !bedFile.empty() && isFile(bedFile))
     {
-        const fileName file = bed.get<fileName>("file").expand();
-        guarded("Cannot read the initial bed", [&]{ dem_->load(file); });
-        Info<< "Particles: " << size() << " read from " << file << endl;
+        guarded("Cannot read the initial bed", [&]{ dem_->load(bedFile); });
+        Info<< "Particles: " << size() << " read from " << bedFile << endl;
         return;
     }
 
@@ -243,6 +244,13 @@ void Foam::dpmCloud::initialise(const bool postProcess)
     );
     Info<< "Particles: settled, kinetic energy " << dem_->kineticEnergy()
         << " J, largest overlap " << dem_->maxOverlap() << " m" << endl;
+
+    if (!bedFile.empty() && mode == startMode::run)
+    {
+        save(bedFile);
+        Info<< "Particles: the settled bed saved to " << bedFile
+            << " for cases with the same particles" << endl;
+    }
 }
 
 
@@ -290,7 +298,7 @@ Foam::dpmCloud::dpmCloud
     const fvMesh& mesh,
     const gasProperties& gas,
     const vector& g,
-    const bool postProcess
+    const startMode mode
 )
 :
     regIOobject
@@ -301,7 +309,7 @@ Foam::dpmCloud::dpmCloud
             mesh.time().timeName(),
             mesh,
             IOobject::NO_READ,
-            postProcess ? IOobject::NO_WRITE : IOobject::AUTO_WRITE
+            mode == startMode::run ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
         )
     ),
     mesh_(mesh),
@@ -327,7 +335,7 @@ Foam::dpmCloud::dpmCloud
     overlapStart_(),
     voidage_
     (
-        fieldIO("voidage", mesh, !postProcess),
+        fieldIO("voidage", mesh, mode == startMode::run),
         mesh,
         dimensionedScalar("one", dimless, 1.0),
         voidagePatchTypes(mesh, gas.inletPatch())
@@ -383,7 +391,7 @@ Foam::dpmCloud::dpmCloud
     );
 
     subSteps();         // the DEM step must divide the CFD step
-    initialise(postProcess);
+    initialise(mode);
 
     writer_.reset
     (
