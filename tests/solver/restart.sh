@@ -39,4 +39,10 @@ for field in ("U", "p_rgh"):
 sys.exit(0 if ok else 1)
 PY
 cmp -s once/0.02/uniform/dem.state twice/0.02/uniform/dem.state || fail "DEM states differ"
-pass "restart continues bit for bit"
+
+# A time directory without its particle state (a run killed while writing
+# it) must stop the restart with a message, not start a new bed there
+rm twice/0.02/uniform/dem.state
+(cd twice && dpmFoam2D >log.incomplete 2>&1) && fail "restarted from an incomplete time"
+grep -q "The time directory is incomplete" twice/log.incomplete || fail "no message for an incomplete time"
+pass "restart continues bit for bit; an incomplete time is refused"

@@ -179,11 +179,20 @@ void Foam::dpmCloud::initialise(const startMode mode)
         Info<< "Particles: " << size() << " read from " << restart << endl;
         return;
     }
-    if (mode == startMode::postProcess)
+    if
+    (
+        mode == startMode::postProcess
+     || (mode == startMode::run && mesh_.time().value() > 0)
+    )
     {
+        // A restart without particles (a new bed starts at time 0): the
+        // run was killed while it wrote this time, or the state was removed
         FatalErrorInFunction
             << "No particle state " << restart << " for time "
-            << mesh_.time().timeName() << exit(FatalError);
+            << mesh_.time().timeName() << nl
+            << "    The time directory is incomplete (a run killed while"
+            << " writing it?): remove it and restart from an earlier time"
+            << exit(FatalError);
     }
 
     const dictionary& bed = dict_.subDict("initialBed");
