@@ -58,10 +58,12 @@ int main(int argc, char *argv[])
     #include "createFields.H"
     #include "createInletVelocity.H"
 
-    // The initial state: the restart state and the first particle file
+    // The initial state: the restart state, the voidage and the first
+    // particle file
     if (!isFile(runTime.timePath()/"uniform"/"dem.state"))
     {
         particles.write();
+        voidage.write();
     }
     if (!isFile(runTime.path()/"particles"/runTime.timeName() + ".h5"))
     {
