@@ -23,22 +23,60 @@ def ensure_foam(case):
     return path
 
 
+class VirtualDisplay:
+    """An Xvfb server of its own on a free display, for pvbatch's window.
+
+    Started directly rather than through xvfb-run: xvfb-run waits for the
+    server with a SIGUSR1 handshake that cannot work when the caller runs
+    with SIGUSR1 ignored (as test drivers may), and two xvfb-run -a started
+    together can race for one display. Here the server's socket is awaited,
+    and the display number is random."""
+
+    def __enter__(self):
+        for _ in range(20):
+            n = random.randint(100, 30000)
+            if os.path.exists("/tmp/.X%d-lock" % n):
+                continue
+            self.server = subprocess.Popen(
+                ["Xvfb", ":%d" % n, "-screen", "0", "2048x2048x24", "-nolisten", "tcp"],
+                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+            for _ in range(200):
+                if os.path.exists("/tmp/.X11-unix/X%d" % n):
+                    self.display = ":%d" % n
+                    return self
+                if self.server.poll() is not None:
+                    break
+                time.sleep(0.05)
+            self.server.kill()
+            self.server.wait()
+        raise RuntimeError("cannot start a virtual X display (Xvfb)")
+
+    def __exit__(self, *exc):
+        self.server.terminate()
+        try:
+            self.server.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            self.server.kill()
+        return False
+
+
 def render(case, times, outs, height=1200, full=False):
-    """Render the particle times to the PNG files outs under
-    `xvfb-run -a pvbatch` (one ParaView session for all of them)."""
+    """Render the particle times to the PNG files outs with pvbatch on a
+    virtual display (one ParaView session for all of them)."""
     ensure_foam(case)
     for out in outs:
         os.makedirs(os.path.dirname(os.path.abspath(out)) or ".", exist_ok=True)
         if os.path.exists(out):
             os.remove(out)
-    cmd = ["xvfb-run", "-a", "pvbatch", RENDER, "--case", os.path.abspath(case),
+    cmd = ["pvbatch", RENDER, "--case", os.path.abspath(case),
            "--height", str(height), "--times"] + ["%r" % float(t) for t in times] \
         + ["--out"] + [os.path.abspath(o) for o in outs] + (["--full"] if full else [])
-    # xvfb-run -a can pick the same display as another xvfb-run started at
-    # the same moment, and pvbatch then aborts opening its window: retry
-    # (but not a Python error of the renderer).
-    for attempt in range(4):
-        r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    # Retry a failed window (not a Python error of the renderer).
+    for attempt in range(3):
+        with VirtualDisplay() as xvfb:
+            env = dict(os.environ, DISPLAY=xvfb.display)
+            r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                               text=True, env=env)
         missing = [o for o in outs if not os.path.isfile(o)]
         if (r.returncode == 0 and not missing) or "Traceback" in r.stdout:
             break

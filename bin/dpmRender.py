@@ -1,6 +1,6 @@
 """Renders dpmFoam2D snapshots off-screen (run by dpmSnapshot and dpmMovie).
 
-    xvfb-run -a pvbatch dpmRender.py --case C --times T1 [T2 ...] \
+    dpmPvbatch dpmRender.py --case C --times T1 [T2 ...] \
         --out F1.png [F2.png ...] [--height PX] [--full]
 
 For each particle time Ti: the gas voidage of the nearest gas time (OpenFOAM

@@ -25,7 +25,7 @@ ok = (times == [0.01, 0.02, 0.03] and data.GetNumberOfPoints() == 3250
       and int((cls == 0).sum()) == 2250 and int((cls == 1).sum()) == 1000)
 sys.exit(0 if ok else 1)
 PY
-xvfb-run -a pvbatch "$workDir/readXdmf.py" "$workDir/bed/particles/particles.xdmf" \
+dpmPvbatch "$workDir/readXdmf.py" "$workDir/bed/particles/particles.xdmf" \
     >log.pvbatch 2>&1 || { cat log.pvbatch; fail "ParaView did not read particles.xdmf as expected"; }
 grep "^times" log.pvbatch
 pass "particles.xdmf opens in ParaView as a time series"
