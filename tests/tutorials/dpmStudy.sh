@@ -1,0 +1,73 @@
+#!/bin/bash
+# bin/dpmStudy on a reduced study: w_small 0.5 at 1 and 64 bar with 5 % of
+# Table 3's particles (331 small + 72 large), 0.1 s of settling, 0.1 s of
+# gas, restart states every 0.02 s, two cases at once.
+# Expected:
+#   1. killed (SIGTERM) while the first case runs, it stops its solvers;
+#   2. run again, it continues that case from its last written time (the
+#      new log starts from the saved state, the old one is kept as
+#      log.dpmFoam2D.1) and runs the rest; one packed bed serves both
+#      pressures (dpmPackBed ran once);
+#   3. results/: summary.csv with both cases at t = 0.1, the M(t) figures
+#      per pressure and per mass fraction, indices.png, snapshots.png;
+#   4. a third run finds everything finished and runs nothing.
+. "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
+. "$testsDir/solver/testFunctions"
+export WM_PROJECT_SITE="${WM_PROJECT_SITE:-$DPMFOAM2D_PROJECT}"
+cd "$workDir" || fail "cd"
+
+study() {
+    dpmStudy study -w 0.5 -p 1 64 -j 2 -scale 0.05 -settleTime 0.1 \
+        -endTime 0.1 -writeInterval 0.02 -mean 0.05 -interval 2 "$@"
+}
+case1=study/w0.50_1bar
+
+echo "1. start, then kill while $case1 runs"
+study > log.study1 2>&1 &
+pid=$!
+for i in $(seq 1 600)
+do
+    [ -f "$case1/0.04/uniform/dem.state" ] && break
+    kill -0 $pid 2>/dev/null || { cat log.study1; fail "dpmStudy ended before it was killed"; }
+    sleep 0.2
+done
+[ -f "$case1/0.04/uniform/dem.state" ] || { kill $pid; fail "no 0.04 written in 120 s"; }
+kill -TERM $pid
+wait $pid
+sleep 1
+pgrep -f "dpmFoam2D" -a | grep -q "$workDir" && fail "a solver of the study still runs"
+grep -q "End" "$case1/log.dpmFoam2D" && fail "$case1 finished before the kill (make it longer)"
+
+echo "2. run again"
+study > log.study2 2>&1 || { cat log.study2; fail "dpmStudy (second run)"; }
+cat log.study2
+[ -f "$case1/log.dpmFoam2D.1" ] || fail "no log.dpmFoam2D.1 (the first run's log)"
+grep -q "^Particles: 403 read from .*/0\.0[2-9]*/uniform/dem.state" "$case1/log.dpmFoam2D" \
+    || fail "$case1 did not continue from its last written time"
+[ $(ls study/beds/w0.50/log.dpmPackBed* | wc -l) = 1 ] || fail "the bed was packed twice"
+for c in study/w0.50_1bar study/w0.50_64bar
+do
+    grep -q "read from .*beds/w0.50/constant/packedBed.state" $c/log.dpmFoam2D* \
+        || fail "$c did not start from the shared bed"
+done
+
+echo "3. results"
+py - <<'PY' || fail "summary.csv"
+import csv
+rows = list(csv.DictReader(open("study/results/summary.csv")))
+print(rows)
+assert [r["case"] for r in rows] == ["w0.50_1bar", "w0.50_64bar"], rows
+for r in rows:
+    assert abs(float(r["time"]) - 0.1) < 1e-9, r
+    assert 0 <= float(r["Mfinal"]) <= 1.2, r
+PY
+for f in summary.md mixing_1bar.png mixing_64bar.png mixing_w0.50.png indices.png \
+         snapshots.png snapshots/w0.50_1bar.png
+do
+    [ -s "study/results/$f" ] || fail "no results/$f"
+done
+
+echo "4. nothing left to run"
+study -noPictures > log.study3 2>&1 || fail "dpmStudy (third run)"
+[ $(grep -c "finished (t = 0.1 s)" log.study3) = 2 ] || { cat log.study3; fail "third run ran something"; }
+pass "dpmStudy runs, resumes after a kill, shares the bed and sums up"
