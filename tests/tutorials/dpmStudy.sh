@@ -16,14 +16,15 @@
 export WM_PROJECT_SITE="${WM_PROJECT_SITE:-$DPMFOAM2D_PROJECT}"
 cd "$workDir" || fail "cd"
 
-study() {
-    dpmStudy study -w 0.5 -p 1 64 -j 2 -scale 0.05 -settleTime 0.1 \
-        -endTime 0.1 -writeInterval 0.02 -mean 0.05 -interval 2 "$@"
-}
+studyArgs=(-w 0.5 -p 1 64 -j 2 -scale 0.05 -settleTime 0.1
+           -endTime 0.1 -writeInterval 0.02 -mean 0.05 -interval 2)
+study() { dpmStudy study "${studyArgs[@]}" "$@"; }
 case1=study/w0.50_1bar
 
 echo "1. start, then kill while $case1 runs"
-study > log.study1 2>&1 &
+# dpmStudy itself in the background (not a function's subshell), so that
+# the signal reaches it
+dpmStudy study "${studyArgs[@]}" > log.study1 2>&1 &
 pid=$!
 for i in $(seq 1 600)
 do
@@ -35,7 +36,11 @@ done
 kill -TERM $pid
 wait $pid
 sleep 1
-pgrep -f "dpmFoam2D" -a | grep -q "$workDir" && fail "a solver of the study still runs"
+kill -0 $pid 2>/dev/null && fail "dpmStudy still runs after SIGTERM"
+for p in $(pgrep -x dpmFoam2D)
+do
+    [ "$(readlink /proc/$p/cwd)" = "$(cd $case1 && pwd -P)" ] && fail "a solver of the study still runs"
+done
 grep -q "End" "$case1/log.dpmFoam2D" && fail "$case1 finished before the kill (make it longer)"
 
 echo "2. run again"
