@@ -98,6 +98,8 @@ def main():
         gas = ps.OpenFOAMReader(FileName=os.path.join(case, "case.foam"))
         gas.MeshRegions = ["internalMesh"]
         gas.CellArrays = ["voidage"]
+        gas.SkipZeroTime = 0        # the solver writes the settled bed's voidage at 0
+        ps.ReloadFiles(gas)         # (the time list is only rebuilt on a reload)
         gas.UpdatePipelineInformation()
         gasTimes = list(gas.TimestepValues) if gas.TimestepValues else [0.0]
         gas.UpdatePipeline(gasTimes[-1])
