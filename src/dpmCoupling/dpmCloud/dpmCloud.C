@@ -57,12 +57,6 @@ IOobject fieldIO(const word& name, const fvMesh& mesh, const bool write)
     );
 }
 
-scalar readVoidageMin(const dictionary& dict)
-{
-    const scalar defaultValue = 0.1;
-    return boundedEntry(dict, "voidageMin", 0, 1, true, &defaultValue);
-}
-
 } // End anonymous namespace
 
 
@@ -90,7 +84,7 @@ Foam::fileName Foam::dpmCloud::stateFile(const word& timeName) const
 }
 
 
-dem::Settings Foam::dpmCloud::demSettings(const scalar) const
+dem::Settings Foam::dpmCloud::demSettings() const
 {
     dem::Settings s;
 
@@ -340,7 +334,7 @@ Foam::dpmCloud::dpmCloud
     drag_(dragModel::New(dict_, gas.rho(), gas.mu())),
     frozen_(dict_.lookupOrDefault<bool>("frozen", false)),
     writeInterval_(positiveEntry(dict_, "writeInterval", 0.01)),
-    voidageMin_(readVoidageMin(dict_)),
+    voidageMin_(boundedEntryOrDefault(dict_, "voidageMin", 0.1, 0, 1, true)),
     overlapStart_(),
     voidage_
     (
@@ -392,7 +386,7 @@ Foam::dpmCloud::dpmCloud
             << exit(FatalIOError);
     }
 
-    const dem::Settings settings = demSettings(g_.y());
+    const dem::Settings settings = demSettings();
     guarded
     (
         "Invalid particle settings",

@@ -8,7 +8,6 @@ namespace Foam
 namespace dragModels
 {
     defineTypeNameAndDebug(ErgunWenYu, 0);
-    static const scalar defaultSwitch = 0.8;
     addToRunTimeSelectionTable(dragModel, ErgunWenYu, dictionary);
 }
 }
@@ -22,7 +21,10 @@ Foam::dragModels::ErgunWenYu::ErgunWenYu
 )
 :
     dragModel(rho, mu),
-    switchVoidage_(boundedEntry(coeffs, "switchVoidage", 0, 1, true, &defaultSwitch))
+    switchVoidage_
+    (
+        boundedEntryOrDefault(coeffs, "switchVoidage", 0.8, 0, 1, true)
+    )
 {}
 
 
