@@ -55,6 +55,10 @@ expectError missingParticleProperties "cannot find file .*constant/particlePrope
     'rm constant/particleProperties'
 expectError unknownInletPatch "inletPatch 'distributor' in .*gasProperties is not a patch of the mesh" \
     'setEntry constant/gasProperties inletPatch distributor'
+expectError neighbourSkinRange "Entry 'neighbourSkin' = 0.01 in .*particleProperties\"? is outside the allowed range \(0, 0.0015\]" \
+    'setEntry constant/particleProperties neighbourSkin 0.01'
+expectError sortIntervalRange "Entry 'sortInterval' = -5 in .*particleProperties\"? is outside the allowed range \[0, inf\)" \
+    'setEntry constant/particleProperties sortInterval -5'
 
 [ "$nFailed" = 0 ] || fail "$nFailed bad inputs were not reported as they should be"
 pass "every bad input gives its message"

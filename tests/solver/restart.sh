@@ -1,6 +1,7 @@
 #!/bin/bash
 # Restart: 2N CFD steps in one go equal N steps, a restart from the written
-# time, and N more. The particles (positions, velocities, spins) and the gas
+# time, and N more (N = 1000 DEM steps: the particles are renumbered by cell
+# every 200, at the restart step too). The particles (positions, velocities, spins) and the gas
 # fields must be identical bit for bit (gas written in binary).
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"

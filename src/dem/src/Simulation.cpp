@@ -37,6 +37,7 @@ double* Simulation::extraForceX() { return system_->particles().extraFx.data(); 
 double* Simulation::extraForceY() { return system_->particles().extraFy.data(); }
 
 void Simulation::advance(double dtOuter) { system_->advance(dtOuter); }
+void Simulation::sortByCell() { system_->sortByCell(); }
 
 const double* Simulation::meanVelocityX() const { return system_->particles().meanVx.data(); }
 const double* Simulation::meanVelocityY() const { return system_->particles().meanVy.data(); }

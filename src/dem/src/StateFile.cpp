@@ -93,7 +93,9 @@ private:
 
 std::vector<double> StateFile::settingsKey(const System& s)
 {
-    // Every setting the trajectory depends on (nThreads does not).
+    // Every setting the trajectory depends on (nThreads does not); the
+    // neighbour skin last, as it only orders the round-off: a state can be
+    // continued with another skin after a fresh neighbour-list build.
     const Settings& st = s.settings_;
     std::vector<double> key;
     key.push_back(static_cast<double>(st.classes.size()));
@@ -155,10 +157,11 @@ void StateFile::load(System& s, const std::string& path)
     std::vector<double> key;
     r.array(key);
     const std::vector<double> here = settingsKey(s);
-    if (key != here) {
+    if (key.size() != here.size() || !std::equal(here.begin(), here.end() - 1, key.begin())) {
         throw Error("state file '" + path + "' was written with other settings (classes, "
-                    "contact, box, gravity, dt or neighbourSkin differ from this Simulation's)");
+                    "contact, box, gravity or dt differ from this Simulation's)");
     }
+    const bool sameSkin = key.back() == here.back();
     // Read into a copy so that a bad file leaves the running system untouched.
     System t = s;
     t.stepCount_ = r.value<std::int64_t>();
@@ -209,6 +212,7 @@ void StateFile::load(System& s, const std::string& path)
         ok = wl.wall[s2] >= 0 && static_cast<std::size_t>(wl.wall[s2]) < t.walls_.size();
     }
     if (!ok) r.fail("inconsistent array sizes or indices");
+    if (!sameSkin) t.listValid_ = false;   // candidates of the old skin: build anew
     s = std::move(t);
 }
 

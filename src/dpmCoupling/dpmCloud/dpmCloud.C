@@ -126,6 +126,18 @@ dem::Settings Foam::dpmCloud::demSettings() const
     s.gravity[1] = g_.y();
     s.dt = dict_.get<scalar>("deltaT");
     s.nThreads = dict_.lookupOrDefault<label>("nThreads", 1);
+
+    // Verlet skin of the neighbour list (default: the DEM's 0.1 d_min): a
+    // wider skin means fewer list builds but more candidate pairs each step
+    if (dict_.found("neighbourSkin"))
+    {
+        scalar dMin = GREAT;
+        for (const dem::ParticleClass& c : s.classes)
+        {
+            dMin = min(dMin, c.diameter);
+        }
+        s.neighbourSkin = boundedEntry(dict_, "neighbourSkin", 0, dMin, true);
+    }
     return s;
 }
 
@@ -333,6 +345,17 @@ Foam::dpmCloud::dpmCloud
     classNames_(dict_.subDict("classes").toc()),
     drag_(dragModel::New(dict_, gas.rho(), gas.mu())),
     frozen_(dict_.lookupOrDefault<bool>("frozen", false)),
+    sortInterval_
+    (
+        label
+        (
+            checkedRange
+            (
+                dict_, "sortInterval",
+                dict_.lookupOrDefault<label>("sortInterval", 200), 0, GREAT, false
+            )
+        )
+    ),
     writeInterval_(positiveEntry(dict_, "writeInterval", 0.01)),
     voidageMin_(boundedEntryOrDefault(dict_, "voidageMin", 0.1, 0, 1, true)),
     overlapStart_(),
@@ -418,33 +441,49 @@ Foam::dpmCloud::~dpmCloud()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+// Sums by class (count x particle mass), not over the particles: they do not
+// depend on the particles' numbering, which sortByCell changes, so a restart
+// gets the same U0 to the last bit
+Foam::scalarList Foam::dpmCloud::classMasses() const
+{
+    labelList n(classNames_.size(), Zero);
+    for (label i = 0; i < size(); ++i)
+    {
+        ++n[dem_->classIndex()[i]];
+    }
+    const scalarList d(classDiameters());
+    const scalarList rho(classDensities());
+    scalarList m(n.size());
+    forAll(m, k)
+    {
+        m[k] = n[k]*rho[k]*constant::mathematical::pi*pow3(d[k])/6;
+    }
+    return m;
+}
+
+
 Foam::scalar Foam::dpmCloud::totalMass() const
 {
-    scalar sum = 0;
-    for (label i = 0; i < size(); ++i) sum += dem_->mass()[i];
-    return sum;
+    return sum(classMasses());
 }
 
 
 Foam::scalar Foam::dpmCloud::totalVolume() const
 {
-    scalar sum = 0;
-    for (label i = 0; i < size(); ++i)
+    const scalarList m(classMasses());
+    const scalarList rho(classDensities());
+    scalar V = 0;
+    forAll(m, k)
     {
-        const scalar d = dem_->diameter()[i];
-        sum += constant::mathematical::pi*d*d*d/6;
+        V += m[k]/rho[k];
     }
-    return sum;
+    return V;
 }
 
 
 Foam::scalarList Foam::dpmCloud::massFractions() const
 {
-    scalarList w(classNames_.size(), Zero);
-    for (label i = 0; i < size(); ++i)
-    {
-        w[dem_->classIndex()[i]] += dem_->mass()[i];
-    }
+    scalarList w(classMasses());
     const scalar M = sum(w);
     forAll(w, k) w[k] /= max(M, VSMALL);
     return w;
@@ -486,6 +525,18 @@ Foam::label Foam::dpmCloud::subSteps() const
 
 void Foam::dpmCloud::interpolateGas(const volVectorField& U)
 {
+    // Renumber the particles by cell now and then; every per-particle array
+    // of the coupling is made anew below and in updateVoidage
+    if
+    (
+        !frozen_ && sortInterval_ > 0
+     && dem_->stepCount() % sortInterval_ == 0
+    )
+    {
+        dem_->sortByCell();
+        updateVoidage();
+    }
+
     const label n = size();
     const scalar pi = constant::mathematical::pi;
     const scalarField& eps = voidage_.primitiveField();

@@ -44,6 +44,9 @@ public:
     void packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed);
 
     void advance(double dtOuter);
+    /// Renumbers the particles in the order of the search cells (row by row), so that
+    /// neighbours sit close in memory; contact history and forces move with them.
+    void sortByCell();
     double settle(double maxTime, double keTolerance);
     /// One DEM step; with fluid = false the fluid inputs are ignored.
     void step(bool fluid);
