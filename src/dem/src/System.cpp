@@ -280,9 +280,22 @@ void System::computePairForces(double historyDt)
     const double* r = p_.radius.data();
     const ContactLaw* laws = pairLaws_.data();
 
+    // On one thread the pair forces go straight into the particles' sums. Each particle
+    // then receives its pairs' forces in pair order, as the gather of the threaded path
+    // adds them: the two paths give the same bits.
+    const bool scatter = settings_.nThreads == 1;
+    double* sumFx = p_.fx.data();
+    double* sumFy = p_.fy.data();
+    double* sumFt = p_.torque.data();   // tangential forces; times r in gatherAndKick
+    if (scatter) {
+        std::fill(p_.fx.begin(), p_.fx.end(), 0.0);
+        std::fill(p_.fy.begin(), p_.fy.end(), 0.0);
+        std::fill(p_.torque.begin(), p_.torque.end(), 0.0);
+    }
+
     std::size_t touching = 0;
     double maxOverlap = 0.0;
-#pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
+#pragma omp parallel for if (!scatter) num_threads(settings_.nThreads) schedule(static) \
     reduction(+ : touching) reduction(max : maxOverlap)
     for (Index k = 0; k < np; ++k) {
         const int i = pi[k];
@@ -309,6 +322,14 @@ void System::computePairForces(double historyDt)
         const PairForce f = contactForce(g, laws[law[k]], historyDt);
         force[k] = StoredForce{f.force.x(), f.force.y(), f.ft};
         xiT[k] = f.xiT;
+        if (scatter) {
+            sumFx[i] += f.force.x();
+            sumFy[i] += f.force.y();
+            sumFt[i] += f.ft;
+            sumFx[j] -= f.force.x();
+            sumFy[j] -= f.force.y();
+            sumFt[j] += f.ft;
+        }
         ++touching;
         maxOverlap = std::max(maxOverlap, g.overlap);
     }
@@ -333,6 +354,8 @@ void System::gatherAndKick(double historyDt, bool kick, bool fluid)
     const ContactLaw* wallLaws = wallLaws_.data();
     Particles& p = p_;
 
+    const bool pairSumsDone = settings_.nThreads == 1;   // see computePairForces
+
     std::size_t touching = 0;
     double maxOverlap = maxOverlap_;
 #pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
@@ -340,7 +363,13 @@ void System::gatherAndKick(double historyDt, bool kick, bool fluid)
     for (Index i = 0; i < n; ++i) {
         double fx = 0.0, fy = 0.0, ft = 0.0;
         // Fixed order (the pair list's) whatever the thread count: bitwise reproducible.
-        for (int e = start[i]; e < start[i + 1]; ++e) {
+        // One thread: computePairForces has summed them in that order already.
+        if (pairSumsDone) {
+            fx = p.fx[i];
+            fy = p.fy[i];
+            ft = p.torque[i];
+        }
+        for (int e = pairSumsDone ? start[i + 1] : start[i]; e < start[i + 1]; ++e) {
             const StoredForce& f = force[entries[e] >> 1];
             const double sign = (entries[e] & 1) ? -1.0 : 1.0;   // j receives -F
             fx += sign * f.fx;
