@@ -571,8 +571,9 @@ void Foam::dpmCloud::interpolateGas(const volVectorField& U)
         dP[i] = d[i];
         uX[i] = u.x();
         uY[i] = u.y();
-        slip[i] =
-            frozen_ ? mag(u) : std::hypot(u.x() - vx[i], u.y() - vy[i]);
+        const scalar sx = u.x() - (frozen_ ? 0 : vx[i]);
+        const scalar sy = u.y() - (frozen_ ? 0 : vy[i]);
+        slip[i] = std::sqrt(sx*sx + sy*sy);     // not hypot: 5x dearer, no gain here
     }
 
     K_.setSize(n);

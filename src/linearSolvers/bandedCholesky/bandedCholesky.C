@@ -5,6 +5,8 @@
 #include "bandedCholesky.H"
 #include "addToRunTimeSelectionTable.H"
 
+#include <limits>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -114,13 +116,23 @@ void Foam::bandedCholesky::factorise
 
         for (label j = lo; j < i; ++j)
         {
+            // The dot product in four independent sums: one chain of
+            // dependent additions would leave the multipliers idle
             const scalar* __restrict__ rowJ = Lp + j*b - (j - b);
-            scalar s = rowI[j];
-            for (label k = max(lo, j - b); k < j; ++k)
+            scalar s0 = rowI[j], s1 = 0, s2 = 0, s3 = 0;
+            label k = max(lo, j - b);
+            for (; k + 3 < j; k += 4)
             {
-                s -= rowI[k]*rowJ[k];
+                s0 -= rowI[k]*rowJ[k];
+                s1 -= rowI[k + 1]*rowJ[k + 1];
+                s2 -= rowI[k + 2]*rowJ[k + 2];
+                s3 -= rowI[k + 3]*rowJ[k + 3];
             }
-            rowI[j] = s;
+            for (; k < j; ++k)
+            {
+                s0 -= rowI[k]*rowJ[k];
+            }
+            rowI[j] = (s0 + s1) + (s2 + s3);
         }
 
         scalar d = D[i];
@@ -131,8 +143,10 @@ void Foam::bandedCholesky::factorise
             rowI[k] = lik;
         }
 
-        // A definite matrix keeps the sign of its pivots
-        if (!(sign*d > SMALL*mag(matrix_.diag()[i])))
+        // A definite matrix keeps the sign of its pivots; a singular one
+        // ends with a pivot at round-off level (n eps of the diagonal; the
+        // smallest pivot of a sound pressure matrix is ~ diag/rows)
+        if (!(sign*d > 10*n*std::numeric_limits<scalar>::epsilon()*mag(matrix_.diag()[i])))
         {
             FatalErrorInFunction
                 << "solver bandedCholesky for " << fieldName_

@@ -11,7 +11,9 @@ Description
     its positive definite negative, in one solve. The same problem solved by
     PCG to 1e-14 agrees. Ends with the line "N passed, M failed".
 
-    Options for the error checks of the calling script:
+    Options:
+      -fixedPatch <name>   the fixed-value patch (default outlet)
+    and for the error checks of the calling script:
       -singular            no fixed-value boundary and no reference level
       -maxBandwidth <b>    a limit below the mesh's bandwidth
 
@@ -57,15 +59,19 @@ int main(int argc, char *argv[])
     argList::noParallel();
     argList::addBoolOption("singular", "all boundaries zero-gradient");
     argList::addOption("maxBandwidth", "b", "limit of the direct solver");
+    argList::addOption("fixedPatch", "name", "the fixed-value patch (outlet)");
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createMesh.H"
 
     const bool singular = args.found("singular");
     const label maxBandwidth = args.lookupOrDefault<label>("maxBandwidth", 0);
+    const word fixedPatch = args.lookupOrDefault<word>("fixedPatch", "outlet");
 
     // Boundary conditions of the gas pressure: fixed at the outlet, zero
-    // gradient elsewhere (all zero gradient for -singular)
+    // gradient elsewhere (all zero gradient for -singular). Fixed at the
+    // inlet instead, the last rows factorised (the top) get the smallest
+    // pivots: a sound matrix that the singularity check must not refuse.
     wordList patchTypes(mesh.boundary().size(), "zeroGradient");
     forAll(mesh.boundary(), patchi)
     {
@@ -73,7 +79,7 @@ int main(int argc, char *argv[])
         {
             patchTypes[patchi] = "empty";
         }
-        else if (!singular && mesh.boundary()[patchi].name() == "outlet")
+        else if (!singular && mesh.boundary()[patchi].name() == fixedPatch)
         {
             patchTypes[patchi] = "fixedValue";
         }
