@@ -1,6 +1,7 @@
 // Binary state file: everything that the next step reads, so a restarted run continues
 // bit for bit (positions, velocities, forces of the last evaluation, the neighbour list
 // in its order, the contact history, the reference positions of the skin criterion).
+// Version 2 files (before pair blocks) are read too; their list is rebuilt.
 
 #include "dem/System.hpp"
 
@@ -14,7 +15,13 @@ namespace dem {
 namespace {
 
 constexpr char magic[16] = "dpmFoam2D-dem\n";
-constexpr std::uint32_t version = 2;
+constexpr std::uint32_t version = 3;
+constexpr std::uint32_t version2 = 2;   // pair forces and a gather index; read, then rebuilt
+
+/// Per-pair record of version-2 files, read and dropped.
+struct Version2Force {
+    double fx, fy, ft;
+};
 
 class Writer {
 public:
@@ -131,7 +138,7 @@ void StateFile::save(const System& s, const std::string& path)
         s.p_.forEachArray([&](const auto& a) { w.array(a); });
         const PairList& pl = s.pairs_;
         w.array(pl.i); w.array(pl.j); w.array(pl.law); w.array(pl.xiT);
-        w.array(pl.force); w.array(pl.start); w.array(pl.entries);
+        w.array(pl.blockStart);
         w.array(s.wallContacts_.start); w.array(s.wallContacts_.wall); w.array(s.wallContacts_.xiT);
         out.write(magic, sizeof(magic));   // end marker
         out.flush();
@@ -151,8 +158,9 @@ void StateFile::load(System& s, const std::string& path)
     in.read(head, sizeof(head));
     if (!in || std::memcmp(head, magic, sizeof(magic)) != 0) r.fail("wrong file type");
     const auto fileVersion = r.value<std::uint32_t>();
-    if (fileVersion != version) {
-        r.fail("version " + std::to_string(fileVersion) + ", expected " + std::to_string(version));
+    if (fileVersion != version && fileVersion != version2) {
+        r.fail("version " + std::to_string(fileVersion) + ", expected " + std::to_string(version)
+               + " or " + std::to_string(version2));
     }
     std::vector<double> key;
     r.array(key);
@@ -173,7 +181,21 @@ void StateFile::load(System& s, const std::string& path)
     t.p_.forEachArray([&](auto& a) { r.array(a); });
     PairList& pl = t.pairs_;
     r.array(pl.i); r.array(pl.j); r.array(pl.law); r.array(pl.xiT);
-    r.array(pl.force); r.array(pl.start); r.array(pl.entries);
+    if (fileVersion == version2) {
+        // Pairs in the search's order, not in blocks: a fresh list is built on the first
+        // step (the history carries over; the sums' order changes at round-off).
+        std::vector<Version2Force> force;
+        std::vector<int> start, entries;
+        r.array(force); r.array(start); r.array(entries);
+        if (force.size() != pl.i.size() || entries.size() != 2 * pl.i.size()) {
+            r.fail("inconsistent array sizes or indices");
+        }
+        pl.blockStart.assign(nPairBlocks + 1, 0);
+        pl.blockStart[nPairBlocks] = 0;   // all pairs "across blocks": valid until the rebuild
+        t.listValid_ = false;
+    } else {
+        r.array(pl.blockStart);
+    }
     r.array(t.wallContacts_.start); r.array(t.wallContacts_.wall); r.array(t.wallContacts_.xiT);
     char tail[sizeof(magic)];
     in.read(tail, sizeof(tail));
@@ -185,8 +207,6 @@ void StateFile::load(System& s, const std::string& path)
     t.p_.forEachArray([&](const auto& a) { ok = ok && a.size() == n; });
     const std::size_t np = pl.i.size();
     ok = ok && pl.j.size() == np && pl.law.size() == np && pl.xiT.size() == np
-         && pl.force.size() == np
-         && pl.entries.size() == 2 * np && (t.listValid_ ? pl.start.size() == n + 1 : true)
          && t.wallContacts_.wall.size() == t.wallContacts_.xiT.size();
     for (std::size_t k = 0; ok && k < np; ++k) {
         ok = pl.i[k] >= 0 && pl.j[k] >= 0 && static_cast<std::size_t>(pl.i[k]) < n
@@ -196,9 +216,6 @@ void StateFile::load(System& s, const std::string& path)
     for (std::size_t i = 0; ok && i < n; ++i) {
         ok = t.p_.classIndex[i] >= 0 && t.p_.classIndex[i] < t.nClasses_;
     }
-    for (std::size_t e = 0; ok && e < pl.entries.size(); ++e) {
-        ok = pl.entries[e] >= 0 && static_cast<std::size_t>(pl.entries[e]) < 2 * np;
-    }
     auto monotone = [](const std::vector<int>& start, std::size_t last) {
         for (std::size_t q = 0; q + 1 < start.size(); ++q) {
             if (start[q] < 0 || start[q] > start[q + 1]) return false;
@@ -206,7 +223,15 @@ void StateFile::load(System& s, const std::string& path)
         return start.empty() || static_cast<std::size_t>(start.back()) == last;
     };
     const WallList& wl = t.wallContacts_;
-    ok = ok && monotone(pl.start, 2 * np) && monotone(wl.start, wl.wall.size())
+    // Blocks: none before the first list build, else nPairBlocks + 1 starts within the list.
+    const std::vector<int>& bs = pl.blockStart;
+    if (!bs.empty()) {
+        ok = ok && bs.size() == static_cast<std::size_t>(nPairBlocks) + 1 && bs.front() >= 0
+             && monotone(bs, static_cast<std::size_t>(bs.back()))
+             && static_cast<std::size_t>(bs.back()) <= np;
+    }
+    ok = ok && (!t.listValid_ || !bs.empty())
+         && monotone(wl.start, wl.wall.size())
          && (!t.listValid_ || wl.start.size() == n + 1);
     for (std::size_t s2 = 0; ok && s2 < wl.wall.size(); ++s2) {
         ok = wl.wall[s2] >= 0 && static_cast<std::size_t>(wl.wall[s2]) < t.walls_.size();

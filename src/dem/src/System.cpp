@@ -132,16 +132,25 @@ void System::rebuildNeighbourList()
 
     search_.findPairs(p_.x.data(), p_.y.data(), p_.radius.data(), n, skin_, found_);
 
+    // Stable counting sort of the found pairs into blocks (the last one: across blocks).
     const std::size_t np = found_.size();
+    std::vector<int> slot(nPairBlocks + 2, 0);
+    auto blockOf = [&](const IndexPair& q) {
+        const int bi = pairBlock(q.i, n);
+        return bi == pairBlock(q.j, n) ? bi : nPairBlocks;
+    };
+    for (const IndexPair& q : found_) ++slot[blockOf(q) + 1];
+    for (int b = 0; b <= nPairBlocks; ++b) slot[b + 1] += slot[b];
+    pairs_.blockStart.assign(slot.begin(), slot.end() - 1);
+
     pairs_.i.resize(np);
     pairs_.j.resize(np);
     pairs_.law.resize(np);
     pairs_.xiT.resize(np);
-    pairs_.force.assign(np, StoredForce{0.0, 0.0, 0.0});
-    pairs_.start.assign(n + 1, 0);
-    for (std::size_t k = 0; k < np; ++k) {
-        const int i = found_[k].i;
-        const int j = found_[k].j;
+    for (const IndexPair& q : found_) {
+        const int k = slot[blockOf(q)]++;
+        const int i = q.i;
+        const int j = q.j;
         pairs_.i[k] = i;
         pairs_.j[k] = j;
         pairs_.law[k] = p_.classIndex[i] * nClasses_ + p_.classIndex[j];
@@ -153,18 +162,6 @@ void System::rebuildNeighbourList()
             }
         }
         pairs_.xiT[k] = xi;
-        ++pairs_.start[i + 1];
-        ++pairs_.start[j + 1];
-    }
-    for (std::size_t q = 0; q < n; ++q) pairs_.start[q + 1] += pairs_.start[q];
-    pairs_.entries.resize(2 * np);
-    {
-        std::vector<int> fill(pairs_.start.begin(), pairs_.start.end() - 1);
-        for (std::size_t k = 0; k < np; ++k) {
-            const int kk = static_cast<int>(k);
-            pairs_.entries[fill[pairs_.i[k]]++] = 2 * kk;
-            pairs_.entries[fill[pairs_.j[k]]++] = 2 * kk + 1;
-        }
     }
 
     // Walls: candidates within radius + skin, history carried over by (particle, wall).
@@ -259,7 +256,7 @@ void System::ensureReady()
     if (!forcesValid_) {
         // First evaluation at the initial state: no history accumulation (dt = 0).
         computePairForces(0.0);
-        gatherAndKick(0.0, false, false);
+        addWallForcesAndKick(0.0, false, false);
         forcesValid_ = true;
     }
 }
@@ -270,8 +267,8 @@ void System::computePairForces(double historyDt)
     const int* pi = pairs_.i.data();
     const int* pj = pairs_.j.data();
     const int* law = pairs_.law.data();
+    const int* blockStart = pairs_.blockStart.data();
     double* xiT = pairs_.xiT.data();
-    StoredForce* force = pairs_.force.data();
     const double* x = p_.x.data();
     const double* y = p_.y.data();
     const double* vx = p_.vx.data();
@@ -279,25 +276,16 @@ void System::computePairForces(double historyDt)
     const double* om = p_.omega.data();
     const double* r = p_.radius.data();
     const ContactLaw* laws = pairLaws_.data();
-
-    // On one thread the pair forces go straight into the particles' sums. Each particle
-    // then receives its pairs' forces in pair order, as the gather of the threaded path
-    // adds them: the two paths give the same bits.
-    const bool scatter = settings_.nThreads == 1;
+    // Sums over each particle's pairs; p.torque holds the sum of tangential forces until
+    // addWallForcesAndKick multiplies it by the radius.
     double* sumFx = p_.fx.data();
     double* sumFy = p_.fy.data();
-    double* sumFt = p_.torque.data();   // tangential forces; times r in gatherAndKick
-    if (scatter) {
-        std::fill(p_.fx.begin(), p_.fx.end(), 0.0);
-        std::fill(p_.fy.begin(), p_.fy.end(), 0.0);
-        std::fill(p_.torque.begin(), p_.torque.end(), 0.0);
-    }
+    double* sumFt = p_.torque.data();
+    std::fill(p_.fx.begin(), p_.fx.end(), 0.0);
+    std::fill(p_.fy.begin(), p_.fy.end(), 0.0);
+    std::fill(p_.torque.begin(), p_.torque.end(), 0.0);
 
-    std::size_t touching = 0;
-    double maxOverlap = 0.0;
-#pragma omp parallel for if (!scatter) num_threads(settings_.nThreads) schedule(static) \
-    reduction(+ : touching) reduction(max : maxOverlap)
-    for (Index k = 0; k < np; ++k) {
+    auto pairForce = [&](Index k, std::size_t& touching, double& maxOverlap) {
         const int i = pi[k];
         const int j = pj[k];
         const double dx = x[j] - x[i];
@@ -305,9 +293,8 @@ void System::computePairForces(double historyDt)
         const double d2 = dx * dx + dy * dy;
         const double rSum = r[i] + r[j];
         if (d2 >= rSum * rSum) {
-            force[k] = StoredForce{0.0, 0.0, 0.0};
             xiT[k] = 0.0;   // separated: the contact's history ends
-            continue;
+            return;
         }
         const double dist = std::sqrt(d2);
         const double invDist = 1.0 / dist;
@@ -320,33 +307,39 @@ void System::computePairForces(double historyDt)
         g.rJ = r[j];
         g.xiT = xiT[k];
         const PairForce f = contactForce(g, laws[law[k]], historyDt);
-        force[k] = StoredForce{f.force.x(), f.force.y(), f.ft};
         xiT[k] = f.xiT;
-        if (scatter) {
-            sumFx[i] += f.force.x();
-            sumFy[i] += f.force.y();
-            sumFt[i] += f.ft;
-            sumFx[j] -= f.force.x();
-            sumFy[j] -= f.force.y();
-            sumFt[j] += f.ft;
-        }
+        sumFx[i] += f.force.x();
+        sumFy[i] += f.force.y();
+        sumFt[i] += f.ft;   // the torque on either partner is r ft (see contactForce)
+        sumFx[j] -= f.force.x();
+        sumFy[j] -= f.force.y();
+        sumFt[j] += f.ft;
         ++touching;
         maxOverlap = std::max(maxOverlap, g.overlap);
+    };
+
+    // Each block's particles receive forces from its own pairs only: blocks run in
+    // parallel; the pairs across blocks then in order on one thread. A particle gets its
+    // forces in the same order whatever the thread count.
+    std::size_t touching = 0;
+    double maxOverlap = 0.0;
+#pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
+    reduction(+ : touching) reduction(max : maxOverlap)
+    for (int b = 0; b < nPairBlocks; ++b) {
+        for (Index k = blockStart[b]; k < blockStart[b + 1]; ++k) pairForce(k, touching, maxOverlap);
     }
+    for (Index k = blockStart[nPairBlocks]; k < np; ++k) pairForce(k, touching, maxOverlap);
     contactCount_ = touching;
     maxOverlap_ = maxOverlap;
 }
 
-void System::gatherAndKick(double historyDt, bool kick, bool fluid)
+void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
 {
     const Index n = static_cast<Index>(p_.size());
     const double h = 0.5 * settings_.dt;
     const double gx = settings_.gravity[0];
     const double gy = settings_.gravity[1];
     const double weight = meanWeight_;
-    const int* start = pairs_.start.data();
-    const int* entries = pairs_.entries.data();
-    const StoredForce* force = pairs_.force.data();
     const int* wStart = wallContacts_.start.data();
     const int* wWall = wallContacts_.wall.data();
     double* wXi = wallContacts_.xiT.data();
@@ -354,28 +347,14 @@ void System::gatherAndKick(double historyDt, bool kick, bool fluid)
     const ContactLaw* wallLaws = wallLaws_.data();
     Particles& p = p_;
 
-    const bool pairSumsDone = settings_.nThreads == 1;   // see computePairForces
-
     std::size_t touching = 0;
     double maxOverlap = maxOverlap_;
 #pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
     reduction(+ : touching) reduction(max : maxOverlap)
     for (Index i = 0; i < n; ++i) {
-        double fx = 0.0, fy = 0.0, ft = 0.0;
-        // Fixed order (the pair list's) whatever the thread count: bitwise reproducible.
-        // One thread: computePairForces has summed them in that order already.
-        if (pairSumsDone) {
-            fx = p.fx[i];
-            fy = p.fy[i];
-            ft = p.torque[i];
-        }
-        for (int e = pairSumsDone ? start[i + 1] : start[i]; e < start[i + 1]; ++e) {
-            const StoredForce& f = force[entries[e] >> 1];
-            const double sign = (entries[e] & 1) ? -1.0 : 1.0;   // j receives -F
-            fx += sign * f.fx;
-            fy += sign * f.fy;
-            ft += f.ft;   // torque on either partner is r ft (see contactForce)
-        }
+        // The pair sums of computePairForces (p.torque: the tangential forces)
+        double fx = p.fx[i], fy = p.fy[i];
+        const double ft = p.torque[i];
         const double ri = p.radius[i];
         double torque = ri * ft;
         for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
@@ -466,7 +445,7 @@ void System::step(bool fluid)
     if (4.0 * maxDisplacement2 >= skin_ * skin_) rebuildNeighbourList();
 
     computePairForces(dt);
-    gatherAndKick(dt, true, fluid);
+    addWallForcesAndKick(dt, true, fluid);
     ++stepCount_;
 }
 
@@ -578,8 +557,7 @@ std::size_t System::memoryBytes() const
     std::size_t bytes = p_.memoryBytes() + search_.memoryBytes()
                         + found_.capacity() * sizeof(IndexPair);
     auto add = [&](const auto& a) { bytes += a.capacity() * sizeof(a[0]); };
-    add(pairs_.i); add(pairs_.j); add(pairs_.law); add(pairs_.xiT);
-    add(pairs_.force); add(pairs_.start); add(pairs_.entries);
+    add(pairs_.i); add(pairs_.j); add(pairs_.law); add(pairs_.xiT); add(pairs_.blockStart);
     add(wallContacts_.start); add(wallContacts_.wall); add(wallContacts_.xiT);
     return bytes;
 }

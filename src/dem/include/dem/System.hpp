@@ -68,11 +68,12 @@ private:
     void buildLaws();
     void rebuildNeighbourList();
     void ensureReady();
-    /// Pair forces into the pair list (parallel over pairs, each pair once).
+    /// Sums each particle's pair forces (parallel over blocks of pairs, each pair once, in
+    /// an order that does not depend on the thread count).
     void computePairForces(double historyDt);
-    /// Gathers each particle's contact forces in a fixed order and does the second
-    /// half-kick (kick = false: only the gather, for the first evaluation).
-    void gatherAndKick(double historyDt, bool kick, bool fluid);
+    /// Adds the wall contacts to the pair sums and does the second half-kick (kick = false:
+    /// only the forces, for the first evaluation).
+    void addWallForcesAndKick(double historyDt, bool kick, bool fluid);
     void setFluidForceAtCurrentVelocity(bool fluid);
     [[noreturn]] void throwLostParticle() const;
     const ContactLaw& pairLaw(int ci, int cj) const { return pairLaws_[ci * nClasses_ + cj]; }
