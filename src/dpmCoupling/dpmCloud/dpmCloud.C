@@ -345,6 +345,7 @@ Foam::dpmCloud::dpmCloud
     classNames_(dict_.subDict("classes").toc()),
     drag_(dragModel::New(dict_, gas.rho(), gas.mu())),
     frozen_(dict_.lookupOrDefault<bool>("frozen", false)),
+    nThreads_(dict_.lookupOrDefault<label>("nThreads", 1)),
     sortInterval_
     (
         label
@@ -358,7 +359,7 @@ Foam::dpmCloud::dpmCloud
     ),
     writeInterval_(positiveEntry(dict_, "writeInterval", 0.01)),
     voidageMin_(boundedEntryOrDefault(dict_, "voidageMin", 0.1, 0, 1, true)),
-    overlapStart_(),
+    overlapCount_(),
     voidage_
     (
         fieldIO("voidage", mesh, mode == startMode::run),
@@ -554,6 +555,7 @@ void Foam::dpmCloud::interpolateGas(const volVectorField& U)
     scalarField dP(n), slip(n);
     double* uX = dem_->gasVelocityX();
     double* uY = dem_->gasVelocityY();
+    #pragma omp parallel for num_threads(nThreads_) schedule(static)
     for (label i = 0; i < n; ++i)
     {
         label cells[4];
@@ -640,7 +642,7 @@ void Foam::dpmCloud::mapToGas()
     for (label i = 0; i < n; ++i)
     {
         const vector F = fluidForce(i);
-        for (label k = overlapStart_[i]; k < overlapStart_[i + 1]; ++k)
+        for (label k = 4*i; k < 4*i + overlapCount_[i]; ++k)
         {
             const label c = overlapCells_[k];
             const scalar f = overlapFraction_[k]/Vc;
@@ -669,27 +671,42 @@ void Foam::dpmCloud::updateVoidage()
     phiP = 0;
     const scalar Vc = grid_.cellVolume();
 
-    overlapStart_.setSize(n + 1);
-    overlapCells_.clear();
-    overlapFraction_.clear();
-    overlapStart_[0] = 0;
+    // The overlaps, particle by particle on the DEM's threads (the costly
+    // part: segment areas), then summed into the cells in particle order,
+    // so the voidage does not depend on the thread count
+    overlapCount_.setSize(n);
+    overlapCells_.setSize(4*n);
+    overlapFraction_.setSize(4*n);
+    #pragma omp parallel for num_threads(nThreads_) schedule(static)
     for (label i = 0; i < n; ++i)
     {
         const scalar r = 0.5*d[i];
         const scalar discArea = constant::mathematical::pi*r*r;
-        const scalar VpByVc = discArea*4*r/(3*Vc);
+        label count = 0;
         grid_.forEachDiscOverlap
         (
             x[i], y[i], r,
             [&](const label c, const scalar area)
             {
-                porosity[c] -= area/cellArea;
-                phiP[c] += VpByVc*area/discArea;
-                overlapCells_.append(c);
-                overlapFraction_.append(area/discArea);
+                overlapCells_[4*i + count] = c;
+                overlapFraction_[4*i + count] = area/discArea;
+                ++count;
             }
         );
-        overlapStart_[i + 1] = overlapCells_.size();
+        overlapCount_[i] = count;
+    }
+
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar r = 0.5*d[i];
+        const scalar discArea = constant::mathematical::pi*r*r;
+        const scalar VpByVc = discArea*4*r/(3*Vc);
+        for (label k = 4*i; k < 4*i + overlapCount_[i]; ++k)
+        {
+            const label c = overlapCells_[k];
+            porosity[c] -= overlapFraction_[k]*discArea/cellArea;
+            phiP[c] += VpByVc*overlapFraction_[k];
+        }
     }
 
     scalarField& eps = voidage_.primitiveFieldRef();
