@@ -138,7 +138,7 @@ void StateFile::save(const System& s, const std::string& path)
         s.p_.forEachArray([&](const auto& a) { w.array(a); });
         const PairList& pl = s.pairs_;
         w.array(pl.i); w.array(pl.j); w.array(pl.law); w.array(pl.xiT);
-        w.array(pl.blockStart);
+        w.array(pl.groupStart);
         w.array(s.wallContacts_.start); w.array(s.wallContacts_.wall); w.array(s.wallContacts_.xiT);
         out.write(magic, sizeof(magic));   // end marker
         out.flush();
@@ -190,11 +190,16 @@ void StateFile::load(System& s, const std::string& path)
         if (force.size() != pl.i.size() || entries.size() != 2 * pl.i.size()) {
             r.fail("inconsistent array sizes or indices");
         }
-        pl.blockStart.assign(nPairBlocks + 1, 0);
-        pl.blockStart[nPairBlocks] = 0;   // all pairs "across blocks": valid until the rebuild
+        pl.groupStart.clear();
         t.listValid_ = false;
     } else {
-        r.array(pl.blockStart);
+        r.array(pl.groupStart);
+        if (pl.groupStart.size() != static_cast<std::size_t>(nPairGroups) + 1) {
+            // Written with another grouping (a state of this session's first blocks):
+            // the history is kept, the list is built anew.
+            pl.groupStart.clear();
+            t.listValid_ = false;
+        }
     }
     r.array(t.wallContacts_.start); r.array(t.wallContacts_.wall); r.array(t.wallContacts_.xiT);
     char tail[sizeof(magic)];
@@ -223,10 +228,10 @@ void StateFile::load(System& s, const std::string& path)
         return start.empty() || static_cast<std::size_t>(start.back()) == last;
     };
     const WallList& wl = t.wallContacts_;
-    // Blocks: none before the first list build, else nPairBlocks + 1 starts within the list.
-    const std::vector<int>& bs = pl.blockStart;
+    // Groups: none before the first list build, else nPairGroups + 1 starts within the list.
+    const std::vector<int>& bs = pl.groupStart;
     if (!bs.empty()) {
-        ok = ok && bs.size() == static_cast<std::size_t>(nPairBlocks) + 1 && bs.front() >= 0
+        ok = ok && bs.size() == static_cast<std::size_t>(nPairGroups) + 1 && bs.front() >= 0
              && monotone(bs, static_cast<std::size_t>(bs.back()))
              && static_cast<std::size_t>(bs.back()) <= np;
     }

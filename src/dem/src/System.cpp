@@ -132,16 +132,13 @@ void System::rebuildNeighbourList()
 
     search_.findPairs(p_.x.data(), p_.y.data(), p_.radius.data(), n, skin_, found_);
 
-    // Stable counting sort of the found pairs into blocks (the last one: across blocks).
+    // Stable counting sort of the found pairs into their groups.
     const std::size_t np = found_.size();
-    std::vector<int> slot(nPairBlocks + 2, 0);
-    auto blockOf = [&](const IndexPair& q) {
-        const int bi = pairBlock(q.i, n);
-        return bi == pairBlock(q.j, n) ? bi : nPairBlocks;
-    };
+    std::vector<int> slot(nPairGroups + 1, 0);
+    auto blockOf = [&](const IndexPair& q) { return pairGroup(q.i, q.j, n); };
     for (const IndexPair& q : found_) ++slot[blockOf(q) + 1];
-    for (int b = 0; b <= nPairBlocks; ++b) slot[b + 1] += slot[b];
-    pairs_.blockStart.assign(slot.begin(), slot.end() - 1);
+    for (int g = 0; g < nPairGroups; ++g) slot[g + 1] += slot[g];
+    pairs_.groupStart = slot;
 
     pairs_.i.resize(np);
     pairs_.j.resize(np);
@@ -263,11 +260,10 @@ void System::ensureReady()
 
 void System::computePairForces(double historyDt)
 {
-    const Index np = static_cast<Index>(pairs_.size());
     const int* pi = pairs_.i.data();
     const int* pj = pairs_.j.data();
     const int* law = pairs_.law.data();
-    const int* blockStart = pairs_.blockStart.data();
+    const int* groupStart = pairs_.groupStart.data();
     double* xiT = pairs_.xiT.data();
     const double* x = p_.x.data();
     const double* y = p_.y.data();
@@ -281,9 +277,7 @@ void System::computePairForces(double historyDt)
     double* sumFx = p_.fx.data();
     double* sumFy = p_.fy.data();
     double* sumFt = p_.torque.data();
-    std::fill(p_.fx.begin(), p_.fx.end(), 0.0);
-    std::fill(p_.fy.begin(), p_.fy.end(), 0.0);
-    std::fill(p_.torque.begin(), p_.torque.end(), 0.0);
+    const std::size_t n = p_.size();
 
     auto pairForce = [&](Index k, std::size_t& touching, double& maxOverlap) {
         const int i = pi[k];
@@ -318,17 +312,34 @@ void System::computePairForces(double historyDt)
         maxOverlap = std::max(maxOverlap, g.overlap);
     };
 
-    // Each block's particles receive forces from its own pairs only: blocks run in
-    // parallel; the pairs across blocks then in order on one thread. A particle gets its
-    // forces in the same order whatever the thread count.
+    // Groups that share no particle run in parallel: the blocks, then the boundaries
+    // between even and odd blocks, then between odd and even ones; the rest on one thread.
+    // A particle gets its forces in the same order whatever the thread count.
+    auto group = [&](int g, std::size_t& touching, double& maxOverlap) {
+        for (Index k = groupStart[g]; k < groupStart[g + 1]; ++k) pairForce(k, touching, maxOverlap);
+    };
     std::size_t touching = 0;
     double maxOverlap = 0.0;
-#pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
-    reduction(+ : touching) reduction(max : maxOverlap)
-    for (int b = 0; b < nPairBlocks; ++b) {
-        for (Index k = blockStart[b]; k < blockStart[b + 1]; ++k) pairForce(k, touching, maxOverlap);
+#pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
+    reduction(max : maxOverlap)
+    {
+#pragma omp for schedule(static)
+        for (int b = 0; b < nPairBlocks; ++b) {
+            // Zeroed by the thread that sums them (and that kicks these particles next),
+            // so the sums stay in its core's cache
+            const std::size_t first = pairBlockBegin(b, n);
+            const std::size_t last = pairBlockBegin(b + 1, n);
+            std::fill(sumFx + first, sumFx + last, 0.0);
+            std::fill(sumFy + first, sumFy + last, 0.0);
+            std::fill(sumFt + first, sumFt + last, 0.0);
+            group(b, touching, maxOverlap);
+        }
+#pragma omp for schedule(static)
+        for (int m = 0; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
+#pragma omp for schedule(static)
+        for (int m = 1; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
     }
-    for (Index k = blockStart[nPairBlocks]; k < np; ++k) pairForce(k, touching, maxOverlap);
+    group(nPairGroups - 1, touching, maxOverlap);
     contactCount_ = touching;
     maxOverlap_ = maxOverlap;
 }
@@ -557,7 +568,7 @@ std::size_t System::memoryBytes() const
     std::size_t bytes = p_.memoryBytes() + search_.memoryBytes()
                         + found_.capacity() * sizeof(IndexPair);
     auto add = [&](const auto& a) { bytes += a.capacity() * sizeof(a[0]); };
-    add(pairs_.i); add(pairs_.j); add(pairs_.law); add(pairs_.xiT); add(pairs_.blockStart);
+    add(pairs_.i); add(pairs_.j); add(pairs_.law); add(pairs_.xiT); add(pairs_.groupStart);
     add(wallContacts_.start); add(wallContacts_.wall); add(wallContacts_.xiT);
     return bytes;
 }

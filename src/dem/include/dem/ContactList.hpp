@@ -13,6 +13,12 @@ namespace dem {
 /// depends on the blocks only, so any number of threads gives the same bits.
 constexpr int nPairBlocks = 8;
 
+/// Groups of pairs, in the order their forces are added: the pairs within each block
+/// (groups 0-7, in parallel), the pairs across the boundary of blocks m and m + 1 (group
+/// 8 + m; even m in parallel, then odd m: two groups of one phase share no particle),
+/// and the rest (the last group, on one thread).
+constexpr int nPairGroups = 2 * nPairBlocks;
+
 /// Block of particle i out of n.
 inline int pairBlock(int i, std::size_t n)
 {
@@ -20,19 +26,33 @@ inline int pairBlock(int i, std::size_t n)
                             / static_cast<std::int64_t>(n));
 }
 
+/// First particle of block b (b = nPairBlocks: n).
+inline std::size_t pairBlockBegin(int b, std::size_t n)
+{
+    return (static_cast<std::size_t>(b) * n + nPairBlocks - 1) / nPairBlocks;
+}
+
+/// Group of the pair (i, j), i < j, out of n particles.
+inline int pairGroup(int i, int j, std::size_t n)
+{
+    const int bi = pairBlock(i, n);
+    const int bj = pairBlock(j, n);
+    if (bi == bj) return bi;
+    if (bj == bi + 1) return nPairBlocks + bi;
+    return nPairGroups - 1;
+}
+
 /// Particle-particle candidates (i < j) as arrays; a candidate keeps its tangential
 /// history while it touches and has it reset to zero when it separates.
 ///
-/// Order: the pairs with both particles in block b are blockStart[b] .. blockStart[b+1]
-/// (b < nPairBlocks), in the search's order; the pairs across blocks follow, from
-/// blockStart[nPairBlocks] to size(). Threads take whole blocks, each adding forces only to
-/// its own particles; the pairs across blocks come after, on one thread. With particles
-/// numbered by cell (sortByCell) these are the few pairs that straddle 7 lines of the bed.
+/// Order: group g's pairs are groupStart[g] .. groupStart[g+1], each group in the search's
+/// order. With particles numbered by cell (sortByCell, or the packing's bands) nearly all
+/// pairs lie within a block or across neighbouring blocks.
 struct PairList {
     std::vector<int> i, j;
     std::vector<int> law;          ///< index into the pair-law table
     std::vector<double> xiT;       ///< tangential spring displacement, m (history)
-    std::vector<int> blockStart;   ///< nPairBlocks + 1 entries
+    std::vector<int> groupStart;   ///< nPairGroups + 1 entries
 
     std::size_t size() const { return i.size(); }
 };
