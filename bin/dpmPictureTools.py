@@ -3,6 +3,7 @@ renderer, and the layout of the mixing plots."""
 
 import os
 import random
+import socket
 import subprocess
 import time
 
@@ -41,7 +42,7 @@ class VirtualDisplay:
                 ["Xvfb", ":%d" % n, "-screen", "0", "2048x2048x24", "-nolisten", "tcp"],
                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
             for _ in range(200):
-                if os.path.exists("/tmp/.X11-unix/X%d" % n):
+                if self._accepts("/tmp/.X11-unix/X%d" % n):
                     self.display = ":%d" % n
                     return self
                 if self.server.poll() is not None:
@@ -50,6 +51,20 @@ class VirtualDisplay:
             self.server.kill()
             self.server.wait()
         raise RuntimeError("cannot start a virtual X display (Xvfb)")
+
+    @staticmethod
+    def _accepts(path):
+        """True once the server takes connections: its socket file appears
+        before it listens, and a busy machine can leave a gap between the two
+        (pvbatch then aborts creating its window)."""
+        if not os.path.exists(path):
+            return False
+        with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as probe:
+            try:
+                probe.connect(path)
+                return True
+            except OSError:
+                return False
 
     def __exit__(self, *exc):
         self.server.terminate()
@@ -78,7 +93,10 @@ def render(case, times, outs, height=1200, full=False):
             r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                text=True, env=env)
         missing = [o for o in outs if not os.path.isfile(o)]
-        if (r.returncode == 0 and not missing) or "Traceback" in r.stdout:
+        # A Python error of the renderer will not go away; a window that
+        # could not be made (SIGABRT in ParaView's render view) may
+        if (r.returncode == 0 and not missing) or \
+                ("Traceback" in r.stdout and "SIGABRT" not in r.stdout):
             break
         time.sleep(1 + 2 * random.random())
     if r.returncode != 0 or missing:
