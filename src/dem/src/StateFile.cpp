@@ -16,7 +16,7 @@ namespace {
 
 constexpr char magic[16] = "dpmFoam2D-dem\n";
 constexpr std::uint32_t version = 3;
-constexpr std::uint32_t version2 = 2;   // pair forces and a gather index; read, then rebuilt
+constexpr std::uint32_t version2 = 2;   // stored pair forces and a per-particle index; read, list rebuilt
 
 /// Per-pair record of version-2 files, read and dropped.
 struct Version2Force {

@@ -135,8 +135,8 @@ void System::rebuildNeighbourList()
     // Stable counting sort of the found pairs into their groups.
     const std::size_t np = found_.size();
     std::vector<int> slot(nPairGroups + 1, 0);
-    auto blockOf = [&](const IndexPair& q) { return pairGroup(q.i, q.j, n); };
-    for (const IndexPair& q : found_) ++slot[blockOf(q) + 1];
+    auto groupOf = [&](const IndexPair& q) { return pairGroup(q.i, q.j, n); };
+    for (const IndexPair& q : found_) ++slot[groupOf(q) + 1];
     for (int g = 0; g < nPairGroups; ++g) slot[g + 1] += slot[g];
     pairs_.groupStart = slot;
 
@@ -145,7 +145,7 @@ void System::rebuildNeighbourList()
     pairs_.law.resize(np);
     pairs_.xiT.resize(np);
     for (const IndexPair& q : found_) {
-        const int k = slot[blockOf(q)]++;
+        const int k = slot[groupOf(q)]++;
         const int i = q.i;
         const int j = q.j;
         pairs_.i[k] = i;

@@ -345,7 +345,6 @@ Foam::dpmCloud::dpmCloud
     classNames_(dict_.subDict("classes").toc()),
     drag_(dragModel::New(dict_, gas.rho(), gas.mu())),
     frozen_(dict_.lookupOrDefault<bool>("frozen", false)),
-    nThreads_(dict_.lookupOrDefault<label>("nThreads", 1)),
     sortInterval_
     (
         label
@@ -526,8 +525,8 @@ Foam::label Foam::dpmCloud::subSteps() const
 
 void Foam::dpmCloud::interpolateGas(const volVectorField& U)
 {
-    // Renumber the particles by cell now and then; every per-particle array
-    // of the coupling is made anew below and in updateVoidage
+    // Renumber the particles by cell now and then; the overlaps follow the
+    // new numbers, the other per-particle arrays are made anew below
     if
     (
         !frozen_ && sortInterval_ > 0
@@ -535,7 +534,7 @@ void Foam::dpmCloud::interpolateGas(const volVectorField& U)
     )
     {
         dem_->sortByCell();
-        updateVoidage();
+        updateOverlaps();
     }
 
     const label n = size();
@@ -555,7 +554,7 @@ void Foam::dpmCloud::interpolateGas(const volVectorField& U)
     scalarField dP(n), slip(n);
     double* uX = dem_->gasVelocityX();
     double* uY = dem_->gasVelocityY();
-    #pragma omp parallel for num_threads(nThreads_) schedule(static)
+    #pragma omp parallel for num_threads(dem_->settings().nThreads) schedule(static)
     for (label i = 0; i < n; ++i)
     {
         label cells[4];
@@ -657,27 +656,20 @@ void Foam::dpmCloud::mapToGas()
 }
 
 
-void Foam::dpmCloud::updateVoidage()
+void Foam::dpmCloud::updateOverlaps()
 {
     const label n = size();
-    const scalar cellArea = grid_.dx()*grid_.dy();
     const double* x = dem_->x();
     const double* y = dem_->y();
     const double* d = dem_->diameter();
 
-    scalarField& porosity = porosity2D_.primitiveFieldRef();
-    scalarField& phiP = particleFraction_.primitiveFieldRef();
-    porosity = 1;
-    phiP = 0;
-    const scalar Vc = grid_.cellVolume();
-
-    // The overlaps, particle by particle on the DEM's threads (the costly
-    // part: segment areas), then summed into the cells in particle order,
-    // so the voidage does not depend on the thread count
+    // Particle by particle on the DEM's threads (the costly part: segment
+    // areas); updateVoidage sums them into the cells in particle order, so
+    // the voidage does not depend on the thread count
     overlapCount_.setSize(n);
     overlapCells_.setSize(4*n);
     overlapFraction_.setSize(4*n);
-    #pragma omp parallel for num_threads(nThreads_) schedule(static)
+    #pragma omp parallel for num_threads(dem_->settings().nThreads) schedule(static)
     for (label i = 0; i < n; ++i)
     {
         const scalar r = 0.5*d[i];
@@ -695,7 +687,22 @@ void Foam::dpmCloud::updateVoidage()
         );
         overlapCount_[i] = count;
     }
+}
 
+
+void Foam::dpmCloud::updateVoidage()
+{
+    updateOverlaps();
+
+    const label n = size();
+    const scalar cellArea = grid_.dx()*grid_.dy();
+    const scalar Vc = grid_.cellVolume();
+    const double* d = dem_->diameter();
+
+    scalarField& porosity = porosity2D_.primitiveFieldRef();
+    scalarField& phiP = particleFraction_.primitiveFieldRef();
+    porosity = 1;
+    phiP = 0;
     for (label i = 0; i < n; ++i)
     {
         const scalar r = 0.5*d[i];

@@ -7,7 +7,8 @@
 
 namespace dem {
 
-/// Per-particle arrays, all of length size(). Index i is the particle's id for the whole run.
+/// Per-particle arrays, all of length size(), in one numbering (System::sortByCell changes
+/// it; `id` stays with the particle).
 struct Particles {
     // State
     std::vector<double> x, y;              ///< position, m
