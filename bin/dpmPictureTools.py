@@ -87,6 +87,7 @@ def render(case, times, outs, height=1200, full=False):
            "--height", str(height), "--times"] + ["%r" % float(t) for t in times] \
         + ["--out"] + [os.path.abspath(o) for o in outs] + (["--full"] if full else [])
     # Retry a failed window (not a Python error of the renderer).
+    failures = []
     for attempt in range(3):
         with VirtualDisplay() as xvfb:
             env = dict(os.environ, DISPLAY=xvfb.display)
@@ -98,7 +99,11 @@ def render(case, times, outs, height=1200, full=False):
         if (r.returncode == 0 and not missing) or \
                 ("Traceback" in r.stdout and "SIGABRT" not in r.stdout):
             break
+        failures.append("attempt %d: exit %d; %s" % (attempt + 1, r.returncode, "\n  ".join(
+            line for line in r.stdout.splitlines()
+            if any(k in line for k in ("ERR", "rror", "SIGABRT", "Traceback")))[:1500]))
         time.sleep(1 + 2 * random.random())
     if r.returncode != 0 or missing:
-        raise RuntimeError("rendering failed (%s):\n%s" % (" ".join(cmd), r.stdout[-3000:]))
+        raise RuntimeError("rendering failed (%s):\n%s\nlast output:\n%s"
+                           % (" ".join(cmd), "\n".join(failures), r.stdout[-2000:]))
     return r.stdout

@@ -8,8 +8,9 @@
 #      new log starts from the saved state, the old one is kept as
 #      log.dpmFoam2D.1) and runs the rest; one packed bed serves both
 #      pressures (dpmPackBed ran once);
-#   3. results/: summary.csv with both cases at t = 0.1, the M(t) figures
-#      per pressure and per mass fraction, indices.png, snapshots.png;
+#   3. results/: summary.csv with both cases at t = 0.1 (and the bed
+#      statistics of dpmBedStatistics), the M(t) figures per pressure and
+#      per mass fraction, indices.png, hydrodynamics.png, snapshots.png;
 #   4. a third run finds everything finished and runs nothing.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
@@ -65,9 +66,17 @@ assert [r["case"] for r in rows] == ["w0.50_1bar", "w0.50_64bar"], rows
 for r in rows:
     assert abs(float(r["time"]) - 0.1) < 1e-9, r
     assert 0 <= float(r["Mfinal"]) <= 1.2, r
+    # dpmBedStatistics read the solver's binary voidage fields: a bed of
+    # 403 particles (940 mm^2 of discs, about 10 mm deep in the 150 mm
+    # wide column) fills one or two 7.5-mm cell rows; its emulsion lies
+    # between close packing (0.26) and the bubble threshold (0.8)
+    assert min(abs(float(r["bedHeight"]) - h) for h in (0.0075, 0.015)) < 1e-12, r
+    assert 0.0 <= float(r["bubbleFraction"]) <= 1.0, r
+    assert 0.26 < float(r["emulsionVoidage"]) <= 0.8, r
+    assert float(r["speedRmsSmall"]) > 0 and float(r["speedRmsLarge"]) > 0, r
 PY
 for f in summary.md mixing_1bar.png mixing_64bar.png mixing_w0.50.png indices.png \
-         snapshots.png snapshots/w0.50_1bar.png
+         hydrodynamics.png snapshots.png snapshots/w0.50_1bar.png
 do
     [ -s "study/results/$f" ] || fail "no results/$f"
 done
