@@ -3,7 +3,9 @@
 # Table 3's particles (331 small + 72 large), 0.1 s of settling, 0.1 s of
 # gas, restart states every 0.02 s, two cases at once.
 # Expected:
-#   1. killed (SIGTERM) while the first case runs, it stops its solvers;
+#   1. a second dpmStudy started meanwhile skips the running case (and
+#      leaves its time directories alone); killed (SIGTERM) while the first
+#      case runs, it stops its solvers;
 #   2. run again, it continues that case from its last written time (the
 #      new log starts from the saved state, the old one is kept as
 #      log.dpmFoam2D.1) and runs the rest; one packed bed serves both
@@ -34,6 +36,21 @@ do
     sleep 0.2
 done
 [ -f "$case1/0.04/uniform/dem.state" ] || { kill $pid; fail "no 0.04 written in 120 s"; }
+# A second dpmStudy leaves the running case alone (its solver paused meanwhile,
+# so that it is still running when the second one has looked)
+solver=
+for p in $(pgrep -x -P $pid dpmFoam2D)
+do
+    [ "$(readlink /proc/$p/cwd)" = "$(cd $case1 && pwd -P)" ] && solver=$p
+done
+[ -n "$solver" ] || { kill $pid; fail "no solver of $case1 running"; }
+kill -STOP $solver
+study -p 1 -noPictures > log.studyTwice 2>&1 || { kill -CONT $solver; cat log.studyTwice; fail "second dpmStudy failed"; }
+kill -CONT $solver
+cat log.studyTwice
+grep -q "^w0.50_1bar *skipped: process [0-9]* runs in it" log.studyTwice \
+    || fail "a second dpmStudy did not skip the running case"
+ls -d "$case1"/*.incomplete 2>/dev/null && fail "a second dpmStudy set aside a time being written"
 kill -TERM $pid
 wait $pid
 sleep 1
