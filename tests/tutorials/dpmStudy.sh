@@ -13,7 +13,8 @@
 #   3. results/: summary.csv with both cases at t = 0.1 (and the bed
 #      statistics of dpmBedStatistics), the M(t) figures per pressure and
 #      per mass fraction, indices.png, hydrodynamics.png, snapshots.png;
-#   4. a third run finds everything finished and runs nothing.
+#   4. a third run finds everything finished and runs nothing;
+#   5. -excessVelocity 0.2 gives a case with U0 = Umf + 0.2 m/s.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 export WM_PROJECT_SITE="${WM_PROJECT_SITE:-$DPMFOAM2D_PROJECT}"
@@ -101,4 +102,16 @@ done
 echo "4. nothing left to run"
 study -noPictures > log.study3 2>&1 || fail "dpmStudy (third run)"
 [ $(grep -c "finished (t = 0.1 s)" log.study3) = 2 ] || { cat log.study3; fail "third run ran something"; }
-pass "dpmStudy runs, resumes after a kill, shares the bed and sums up"
+echo "5. a variant study at a given U0 - Umf"
+dpmStudy variant -w 0.5 -p 64 -j 1 -scale 0.05 -settleTime 0.1 -endTime 0.02 \
+    -writeInterval 0.02 -mean 0.01 -excessVelocity 0.2 -noPictures > log.variant 2>&1 \
+    || { cat log.variant; fail "dpmStudy -excessVelocity"; }
+grep -q "(set by U0 - Umf 0.2 m/s)" variant/w0.50_64bar/log.dpmFoam2D \
+    || fail "the variant case's U0 was not set by -excessVelocity"
+py - <<'PY' || fail "variant summary.csv"
+import csv
+r = list(csv.DictReader(open("variant/results/summary.csv")))[0]
+print("Umf", r["Umf"], "U0", r["U0"])
+assert abs(float(r["U0"]) - float(r["Umf"]) - 0.2) < 1e-6, r
+PY
+pass "dpmStudy runs, resumes after a kill, shares the bed, sums up, sets U0 - Umf"

@@ -1,6 +1,7 @@
 #include "gasProperties.H"
 #include "positiveEntry.H"
 #include "Time.H"
+#include "OStringStream.H"
 
 Foam::gasProperties::gasProperties(const objectRegistry& obr)
 :
@@ -18,6 +19,42 @@ Foam::gasProperties::gasProperties(const objectRegistry& obr)
     operatingPressure_(positiveEntry(*this, "operatingPressure")),
     densityAtOneBar_(positiveEntry(*this, "densityAtOneBar", 1.204)),
     mu_(positiveEntry(*this, "viscosity", 1.75e-5)),
-    U0byUmf_(positiveEntry(*this, "U0byUmf")),
+    U0byUmf_(-1),
+    excessVelocity_(-1),
     inletPatch_(lookupOrDefault<word>("inletPatch", "inlet"))
-{}
+{
+    const bool byRatio = found("U0byUmf");
+    const bool byExcess = found("excessVelocity");
+    if (byRatio == byExcess)
+    {
+        FatalIOErrorInFunction(*this)
+            << name() << " needs exactly one of the entries 'U0byUmf' (U0/Umf, "
+            << "in (0, inf)) and 'excessVelocity' (U0 - Umf in m/s, in "
+            << "(0, inf)); it has " << (byRatio ? "both" : "neither")
+            << exit(FatalIOError);
+    }
+    if (byRatio)
+    {
+        U0byUmf_ = positiveEntry(*this, "U0byUmf");
+    }
+    else
+    {
+        excessVelocity_ = positiveEntry(*this, "excessVelocity");
+    }
+}
+
+
+Foam::string Foam::gasProperties::U0Setting() const
+{
+    OStringStream os;
+    os.precision(Sout.precision());     // as the log prints the other numbers
+    if (U0byUmf_ > 0)
+    {
+        os  << "U0/Umf " << U0byUmf_;
+    }
+    else
+    {
+        os  << "U0 - Umf " << excessVelocity_ << " m/s";
+    }
+    return os.str();
+}
