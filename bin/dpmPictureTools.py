@@ -5,6 +5,7 @@ import os
 import random
 import socket
 import subprocess
+import tempfile
 import time
 
 HERE = os.path.dirname(os.path.realpath(__file__))
@@ -38,9 +39,13 @@ class VirtualDisplay:
             n = random.randint(100, 30000)
             if os.path.exists("/tmp/.X%d-lock" % n):
                 continue
+            # -noreset: without it the server resets when its last client leaves
+            # (our probe below), and a reset on a busy machine can refuse the
+            # renderer's connection
+            self.log = tempfile.TemporaryFile(mode="w+")
             self.server = subprocess.Popen(
-                ["Xvfb", ":%d" % n, "-screen", "0", "2048x2048x24", "-nolisten", "tcp"],
-                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                ["Xvfb", ":%d" % n, "-screen", "0", "2048x2048x24", "-nolisten", "tcp",
+                 "-noreset"], stdout=subprocess.DEVNULL, stderr=self.log)
             for _ in range(200):
                 if self._accepts("/tmp/.X11-unix/X%d" % n):
                     self.display = ":%d" % n
@@ -50,7 +55,13 @@ class VirtualDisplay:
                 time.sleep(0.05)
             self.server.kill()
             self.server.wait()
+            self.log.close()
         raise RuntimeError("cannot start a virtual X display (Xvfb)")
+
+    def messages(self):
+        """What the server has said (its stderr), for a failure report."""
+        self.log.seek(0)
+        return self.log.read()[-1500:]
 
     @staticmethod
     def _accepts(path):
@@ -72,6 +83,7 @@ class VirtualDisplay:
             self.server.wait(timeout=10)
         except subprocess.TimeoutExpired:
             self.server.kill()
+        self.log.close()
         return False
 
 
@@ -93,15 +105,19 @@ def render(case, times, outs, height=1200, full=False):
             env = dict(os.environ, DISPLAY=xvfb.display)
             r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                text=True, env=env)
+            alive = xvfb.server.poll() is None
+            server = xvfb.messages()
         missing = [o for o in outs if not os.path.isfile(o)]
         # A Python error of the renderer will not go away; a window that
         # could not be made (SIGABRT in ParaView's render view) may
         if (r.returncode == 0 and not missing) or \
                 ("Traceback" in r.stdout and "SIGABRT" not in r.stdout):
             break
-        failures.append("attempt %d: exit %d; %s" % (attempt + 1, r.returncode, "\n  ".join(
-            line for line in r.stdout.splitlines()
-            if any(k in line for k in ("ERR", "rror", "SIGABRT", "Traceback")))[:1500]))
+        failures.append("attempt %d: exit %d; %s\n  Xvfb %s; its messages: %s" % (
+            attempt + 1, r.returncode, "\n  ".join(
+                line for line in r.stdout.splitlines()
+                if any(k in line for k in ("ERR", "rror", "SIGABRT", "Traceback")))[:1500],
+            "still running" if alive else "had exited", server.strip() or "none"))
         time.sleep(1 + 2 * random.random())
     if r.returncode != 0 or missing:
         raise RuntimeError("rendering failed (%s):\n%s\nlast output:\n%s"
