@@ -13,7 +13,8 @@ import numpy as np
 
 _HEADER = re.compile(rb"internalField\s+(uniform|nonuniform)\s+")
 _LIST = re.compile(rb"List<(scalar|vector)>\s*(\d+)\s*\(")
-_NUMBER = re.compile(r"^[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?$")
+# A time as OpenFOAM names its directories (and dpmFoam2D its particle files)
+TIME_NAME = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$")
 _COMPONENTS = {b"scalar": 1, b"vector": 3}
 
 
@@ -33,7 +34,8 @@ def _scalar_bytes(text, path):
 
 def internal_field(path, n_cells=None):
     """The internal field of a volScalarField ([N]) or volVectorField
-    ([N, 3]). A uniform field needs n_cells to be expanded."""
+    ([N, 3]). A uniform field is expanded to n_cells values, or returned as
+    its one value (a float, or an array of 3) when n_cells is None."""
     try:
         with open(path, "rb") as f:
             text = f.read()
@@ -47,7 +49,7 @@ def internal_field(path, n_cells=None):
         value = rest.split(b";", 1)[0].strip()
         a = np.array(value.strip(b"()").split(), float)
         if n_cells is None:
-            raise FieldError("%s: uniform internalField and no cell count given" % path)
+            return a if a.size > 1 else float(a[0])
         return np.tile(a, (n_cells, 1)) if a.size > 1 else np.full(n_cells, a[0])
     m = _LIST.match(rest)
     if not m:
@@ -72,12 +74,12 @@ def internal_field(path, n_cells=None):
 
 
 def time_dirs(case):
-    """(time, name) of the case's numeric time directories, in time order."""
-    out = []
-    for name in os.listdir(case):
-        if _NUMBER.match(name) and os.path.isdir(os.path.join(case, name)):
-            out.append((float(name), name))
-    return sorted(out)
+    """(time, name) of the case's numeric time directories, in time order
+    (none if the case does not exist yet)."""
+    if not os.path.isdir(case):
+        return []
+    return sorted((float(name), name) for name in os.listdir(case)
+                  if TIME_NAME.match(name) and os.path.isdir(os.path.join(case, name)))
 
 
 def cell_geometry(case):

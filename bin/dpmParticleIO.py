@@ -17,10 +17,11 @@ Used by the dpm* picture commands and by the tests that make synthetic data.
 """
 
 import os
-import re
 
 import numpy as np
 import h5py
+
+from dpmFoamFields import TIME_NAME
 
 PARTICLES_DIR = "particles"
 XDMF_NAME = "particles.xdmf"
@@ -97,7 +98,6 @@ def read_particles(path):
     return out
 
 
-_NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$")
 
 
 def list_times(case):
@@ -108,7 +108,7 @@ def list_times(case):
     if os.path.isdir(d):
         for fname in os.listdir(d):
             stem, ext = os.path.splitext(fname)
-            if ext == ".h5" and _NUMBER.match(stem):
+            if ext == ".h5" and TIME_NAME.match(stem):
                 out.append((float(stem), os.path.join(d, fname)))
     return sorted(out)
 
@@ -198,7 +198,7 @@ def read_postprocessing(case, name, fname):
     if not os.path.isdir(root):
         return None
     starts = sorted((float(s), s) for s in os.listdir(root)
-                    if _NUMBER.match(s) and os.path.isfile(os.path.join(root, s, fname)))
+                    if TIME_NAME.match(s) and os.path.isfile(os.path.join(root, s, fname)))
     if not starts:
         return None
     parts = [read_dat(os.path.join(root, s, fname)) for _, s in starts]

@@ -1,23 +1,12 @@
-"""Small readers for the solver tests: OpenFOAM ASCII fields and the
-particle HDF5 files (layout in src/dpmCoupling/particleWriter)."""
-import re
+"""Small helpers for the solver tests: OpenFOAM fields (the project's own
+reader, bin/dpmFoamFields.py: ASCII or binary) and correlations."""
+import os
+import sys
+
 import numpy as np
 
-
-def internal_field(path):
-    """Values of a volScalarField/volVectorField written in ASCII."""
-    text = open(path).read()
-    m = re.search(r"internalField\s+uniform\s+([^;]+);", text)
-    if m:
-        return float(m.group(1)) if "(" not in m.group(1) else \
-            np.array(m.group(1).strip("() ").split(), float)
-    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text)
-    kind, n = m.group(1), int(m.group(2))
-    body = text[m.end():]
-    if kind == "scalar":
-        return np.array(body.split(None, n)[:n], float)
-    rows = re.findall(r"\(([^()]*)\)", body)[:n]
-    return np.array([r.split() for r in rows], float)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "bin"))
+from dpmFoamFields import internal_field  # noqa: E402,F401  (used by the tests)
 
 
 def wen_yu_umf(d, rho_p, rho_g, mu=1.75e-5, g=9.81):
