@@ -191,22 +191,31 @@ def read_dat(path):
 def read_postprocessing(case, name, fname):
     """A function object's table over all its start-time directories,
     <case>/postProcessing/<name>/<startTime>/<fname>, joined in time order:
-    rows of an earlier start time at or after a later start time are dropped
-    (as after a restart from an earlier time). Returns dict name -> array,
-    or None if there is no such file."""
+    rows of an earlier run at or after a later run's start time are dropped
+    (as after a restart from an earlier time). A second run from the same
+    start time finds <fname> there and OpenFOAM's writeFile names its file
+    <stem>_<startTime><ext>; that file is the later run and replaces <fname>.
+    Returns dict name -> array, or None if there is no such file."""
     root = os.path.join(case, "postProcessing", name)
     if not os.path.isdir(root):
         return None
-    starts = sorted((float(s), s) for s in os.listdir(root)
-                    if TIME_NAME.match(s) and os.path.isfile(os.path.join(root, s, fname)))
-    if not starts:
+    stem, ext = os.path.splitext(fname)
+    runs = []                   # (start time, path), oldest run first
+    for s in os.listdir(root):
+        if not TIME_NAME.match(s):
+            continue
+        for rank, f in enumerate((fname, "%s_%s%s" % (stem, s, ext))):
+            if os.path.isfile(os.path.join(root, s, f)):
+                runs.append((float(s), rank, os.path.join(root, s, f)))
+    if not runs:
         return None
-    parts = [read_dat(os.path.join(root, s, fname)) for _, s in starts]
+    runs.sort()
+    parts = [read_dat(path) for _, _, path in runs]
     keep = []
     for i, part in enumerate(parts):
         time = part[next(iter(part))]
         mask = np.ones(len(time), bool)
-        if i + 1 < len(starts):
-            mask = time < starts[i + 1][0]
+        if i + 1 < len(runs):
+            mask = time < runs[i + 1][0]
         keep.append({k: v[mask] for k, v in part.items()})
     return {k: np.concatenate([p[k] for p in keep]) for k in keep[-1]}

@@ -13,12 +13,16 @@
       voidage: 0.40 in the bed (cell centre y < 0.12 m), 1 above, and a
       bubble of voidage 0.9 (radius 20 mm) rising 20 mm per time step.
 
-  makeCase.py mixing <case> <M0> <Minf> <tau> [restart]
+  makeCase.py mixing <case> <M0> <Minf> <tau> [restart | rerun]
       postProcessing/laceyIndex/0/{laceyIndex.dat,segregation.dat} with
       M(t) = Minf + (M0 - Minf) exp(-t/tau), t = 0..5 s every 0.1 s; with
       'restart' the rows from t = 2.5 s on go to a second start-time
       directory 2.5 (and the first keeps some rows past 2.5 that a restart
-      overwrites: the reader must drop them).
+      overwrites: the reader must drop them). 'rerun': as 'restart', but the
+      run from 2.5 was killed at 3.5 s and run again from 2.5: its files
+      hold M + 0.2 (wrong on purpose) and the second run's rows are in
+      laceyIndex_2.5.dat and segregation_2.5.dat, as OpenFOAM's writeFile
+      names them when the first ones exist.
 """
 
 import os
@@ -93,7 +97,7 @@ def particles(case, times):
     open(os.path.join(case, "case.foam"), "a").close()
 
 
-def mixing(case, M0, Minf, tau, restart):
+def mixing(case, M0, Minf, tau, layout):
     t = np.round(np.arange(0, 5.0001, 0.1), 10)
     M = Minf + (M0 - Minf) * np.exp(-t / tau)
     S02 = 0.25 * np.ones_like(t)
@@ -104,14 +108,21 @@ def mixing(case, M0, Minf, tau, restart):
     lacey = np.column_stack([t, M, S2, S02, SR2, np.full_like(t, 400)])
     seg = np.column_stack([t, 0.06 + 0.02 * vert, 0.06 - 0.02 * vert, vert,
                            0.0375 + 0.01 * hor, 0.0375 - 0.01 * hor, hor])
-    parts = [("0", t <= 3.0 if restart else t >= 0), ("2.5", t >= 2.5)] if restart \
-        else [("0", t >= 0)]
-    for start, mask in parts:
+    killed = lacey.copy()
+    killed[:, 1] += 0.2
+    if layout == "rerun":
+        parts = [("0", "", lacey, t <= 3.0), ("2.5", "", killed, (t >= 2.5) & (t <= 3.5)),
+                 ("2.5", "_2.5", lacey, t >= 2.5)]
+    elif layout == "restart":
+        parts = [("0", "", lacey, t <= 3.0), ("2.5", "", lacey, t >= 2.5)]
+    else:
+        parts = [("0", "", lacey, t >= 0)]
+    for start, suffix, table, mask in parts:
         d = os.path.join(case, "postProcessing", "laceyIndex", start)
         os.makedirs(d, exist_ok=True)
-        np.savetxt(os.path.join(d, "laceyIndex.dat"), lacey[mask], fmt="%.6g",
+        np.savetxt(os.path.join(d, "laceyIndex%s.dat" % suffix), table[mask], fmt="%.6g",
                    header="Time M S2 S02 SR2 nCells", comments="# ")
-        np.savetxt(os.path.join(d, "segregation.dat"), seg[mask], fmt="%.6g",
+        np.savetxt(os.path.join(d, "segregation%s.dat" % suffix), seg[mask], fmt="%.6g",
                    header="Time hSmall hLarge vertical rSmall rLarge horizontal",
                    comments="# ")
 
@@ -121,6 +132,6 @@ if __name__ == "__main__":
         particles(sys.argv[2], [float(a) for a in sys.argv[3:]])
     elif len(sys.argv) >= 6 and sys.argv[1] == "mixing":
         mixing(sys.argv[2], float(sys.argv[3]), float(sys.argv[4]), float(sys.argv[5]),
-               len(sys.argv) > 6 and sys.argv[6] == "restart")
+               sys.argv[6] if len(sys.argv) > 6 else None)
     else:
         sys.exit(__doc__)

@@ -11,7 +11,8 @@
 #      log.dpmFoam2D.1) and runs the rest; one packed bed serves both
 #      pressures (dpmPackBed ran once);
 #   3. results/: summary.csv with both cases at t = 0.1 (and the bed
-#      statistics of dpmBedStatistics), the M(t) figures per pressure and
+#      statistics of dpmBedStatistics), windows.csv (M in windows of -mean
+#      s, checked against the function object's rows), the M(t) figures per pressure and
 #      per mass fraction, indices.png, hydrodynamics.png, snapshots.png;
 #   4. a third run finds everything finished and runs nothing;
 #   5. -excessVelocity 0.2 gives a case with U0 = Umf + 0.2 m/s.
@@ -92,7 +93,24 @@ for r in rows:
     assert 0.0 <= float(r["bubbleFraction"]) <= 1.0, r
     assert 0.26 < float(r["emulsionVoidage"]) <= 0.8, r
     assert float(r["speedRmsSmall"]) > 0 and float(r["speedRmsLarge"]) > 0, r
+# windows.csv: -mean 0.05 over 0.1 s of gas = two windows per case; the
+# 64-bar case ran once (one start-time directory): its window means are
+# those of the function object's rows with 0 < t <= 0.05 and 0.05 < t <= 0.1
+import glob
+import numpy as np
+win = list(csv.DictReader(open("study/results/windows.csv")))
+assert [(r["case"], float(r["tStart"]), float(r["tEnd"])) for r in win] == \
+    [(c, a, b) for c in ("w0.50_1bar", "w0.50_64bar") for a, b in ((0, 0.05), (0.05, 0.1))], win
+dat = glob.glob("study/w0.50_64bar/postProcessing/laceyIndex/*/laceyIndex.dat")
+assert len(dat) == 1, dat
+t, M = np.loadtxt(dat[0], usecols=(0, 1), unpack=True)
+for r, (a, b) in zip(win[2:], ((0, 0.05), (0.05, 0.1))):
+    sel = (t > a + 1e-9) & (t <= b + 1e-9)
+    assert sel.sum() == 5, t
+    assert abs(float(r["M"]) - M[sel].mean()) < 1e-12, (r, M[sel].mean())
 PY
+grep -q "^| w0.50_64bar | [0-9.]* | [0-9.]* |$" study/results/summary.md \
+    || fail "no row of window means in summary.md"
 for f in summary.md mixing_1bar.png mixing_64bar.png mixing_w0.50.png indices.png \
          hydrodynamics.png snapshots.png snapshots/w0.50_1bar.png
 do
