@@ -98,8 +98,6 @@ def read_particles(path):
     return out
 
 
-
-
 def list_times(case):
     """[(time, path)] of the particle files of a case, in time order. The
     time is read from the file name (as OpenFOAM names time directories)."""
