@@ -98,7 +98,11 @@ def main():
         gas = ps.OpenFOAMReader(FileName=os.path.join(case, "case.foam"))
         gas.MeshRegions = ["internalMesh"]
         gas.CellArrays = ["voidage"]
-        gas.SkipZeroTime = 0        # the solver writes the settled bed's voidage at 0
+        # The solver writes the settled bed's voidage at 0; a 0/ without it
+        # (a case set up by hand) would hide the field: the reader lists the
+        # fields of its first time.
+        gas.SkipZeroTime = 0 if any(os.path.isfile(os.path.join(case, "0", f))
+                                    for f in ("voidage", "voidage.gz")) else 1
         ps.ReloadFiles(gas)         # (the time list is only rebuilt on a reload)
         gas.UpdatePipelineInformation()
         gasTimes = list(gas.TimestepValues) if gas.TimestepValues else [0.0]
