@@ -1,0 +1,94 @@
+"""Ensemble statistics over random packings (seeds) for dpmStudy.
+
+A fluidized bed is chaotic: one run is one sample. The cases of a study that
+differ only in their seed form an ensemble; a quantity is reported as the
+ensemble mean with a two-sided Student-t confidence interval, and two
+ensembles are compared through the difference of their means with Welch's
+interval (unequal variances, Welch-Satterthwaite degrees of freedom). A
+trend is called only where the interval of the difference excludes zero.
+"""
+
+import math
+
+import numpy as np
+from scipy import stats
+
+LEVEL = 0.95        # confidence level of every interval
+
+
+def finite(values):
+    v = np.asarray(values, dtype=float)
+    return v[np.isfinite(v)]
+
+
+def mean_ci(values, level=LEVEL):
+    """(mean, half-width of the interval, n) over the finite values; the
+    half-width is nan for fewer than two values (no spread measured)."""
+    v = finite(values)
+    n = len(v)
+    if n == 0:
+        return math.nan, math.nan, 0
+    if n == 1:
+        return float(v[0]), math.nan, 1
+    half = stats.t.ppf(0.5 + level / 2, n - 1) * v.std(ddof=1) / math.sqrt(n)
+    return float(v.mean()), float(half), n
+
+
+def difference_ci(a, b, level=LEVEL):
+    """(mean(a) - mean(b), half-width of Welch's interval, na, nb). The
+    half-width is nan unless both ensembles have two or more values."""
+    va, vb = finite(a), finite(b)
+    na, nb = len(va), len(vb)
+    if na == 0 or nb == 0:
+        return math.nan, math.nan, na, nb
+    diff = float(va.mean() - vb.mean())
+    if na < 2 or nb < 2:
+        return diff, math.nan, na, nb
+    sa, sb = va.var(ddof=1) / na, vb.var(ddof=1) / nb
+    se2 = sa + sb
+    if se2 == 0:
+        return diff, 0.0, na, nb
+    dof = se2 ** 2 / (sa ** 2 / (na - 1) + sb ** 2 / (nb - 1))
+    return diff, float(stats.t.ppf(0.5 + level / 2, dof) * math.sqrt(se2)), na, nb
+
+
+def sign_of(diff, half):
+    """'+' or '-' where the interval excludes zero, 'none' where it holds
+    zero, '+?' / '-?' for one sample (a sign without an interval)."""
+    if not math.isfinite(diff):
+        return "n/a"
+    if not math.isfinite(half):
+        return "+?" if diff > 0 else "-?"
+    if abs(diff) <= half:
+        return "none"
+    return "+" if diff > 0 else "-"
+
+
+def band(curves, level=LEVEL):
+    """Mean and interval half-width of several curves y_i(t) on a common
+    grid: the times of the first curve within the range all curves cover
+    (others linearly interpolated). Returns (t, mean, half) arrays; half
+    is nan for one curve."""
+    curves = [(np.asarray(t, float), np.asarray(y, float)) for t, y in curves if len(t)]
+    if not curves:
+        return np.array([]), np.array([]), np.array([])
+    t0 = max(t[0] for t, _ in curves)
+    t1 = min(t[-1] for t, _ in curves)
+    grid = curves[0][0]
+    grid = grid[(grid >= t0 - 1e-12) & (grid <= t1 + 1e-12)]
+    Y = np.array([np.interp(grid, t, y) for t, y in curves])
+    n = len(curves)
+    mean = Y.mean(axis=0)
+    if n < 2:
+        return grid, mean, np.full_like(mean, np.nan)
+    half = stats.t.ppf(0.5 + level / 2, n - 1) * Y.std(axis=0, ddof=1) / math.sqrt(n)
+    return grid, mean, half
+
+
+def fmt(mean, half, digits=3):
+    """'0.412 +- 0.031' (or the mean alone without an interval)."""
+    if not math.isfinite(mean):
+        return "-"
+    if not math.isfinite(half):
+        return "%.*f" % (digits, mean)
+    return "%.*f +- %.*f" % (digits, mean, digits, half)
