@@ -57,6 +57,8 @@ def sign_of(diff, half):
     zero, '+?' / '-?' for one sample (a sign without an interval)."""
     if not math.isfinite(diff):
         return "n/a"
+    if diff == 0:
+        return "none"
     if not math.isfinite(half):
         return "+?" if diff > 0 else "-?"
     if abs(diff) <= half:

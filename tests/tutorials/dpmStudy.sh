@@ -15,7 +15,14 @@
 #      s, checked against the function object's rows), the M(t) figures per pressure and
 #      per mass fraction, indices.png, hydrodynamics.png, snapshots.png;
 #   4. a third run finds everything finished and runs nothing;
-#   5. -excessVelocity 0.2 gives a case with U0 = Umf + 0.2 m/s.
+#   5. -excessVelocity 0.2 gives a case with U0 = Umf + 0.2 m/s;
+#   6. -seeds 2: a bed per seed (packed from seeds 1 and 2: different
+#      beds), each case started from its own seed's bed, an ensemble row
+#      of two in results/ensemble.csv;
+#   7. -variant upwind: the case's fvSchemes edited, the edits recorded in
+#      constant/variant and results/variants.md; a rerun from that record
+#      makes the same case; a changed variant file, an unknown variant and
+#      a variant naming an entry the template lacks are refused.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 export WM_PROJECT_SITE="${WM_PROJECT_SITE:-$DPMFOAM2D_PROJECT}"
@@ -132,4 +139,46 @@ r = list(csv.DictReader(open("variant/results/summary.csv")))[0]
 print("Umf", r["Umf"], "U0", r["U0"])
 assert abs(float(r["U0"]) - float(r["Umf"]) - 0.2) < 1e-6, r
 PY
-pass "dpmStudy runs, resumes after a kill, shares the bed, sums up, sets U0 - Umf"
+echo "6. seeds"
+short=(-w 0.5 -p 64 -scale 0.05 -settleTime 0.1 -endTime 0.02 -writeInterval 0.02
+       -mean 0.01 -noPictures)
+dpmStudy seeds "${short[@]}" -seeds 2 -j 2 > log.seeds 2>&1 || { cat log.seeds; fail "dpmStudy -seeds 2"; }
+for k in 1 2
+do
+    grep -q "at random in .* (seed $k)" seeds/beds/w0.50_seed$k/log.dpmPackBed \
+        || fail "bed w0.50_seed$k was not packed with seed $k"
+    grep -q "read from .*beds/w0.50_seed$k/constant/packedBed.state" \
+        seeds/w0.50_64bar_seed$k/log.dpmFoam2D || fail "case seed $k did not start from its bed"
+done
+cmp -s seeds/beds/w0.50_seed1/constant/packedBed.state seeds/beds/w0.50_seed2/constant/packedBed.state \
+    && fail "the two seeds gave the same bed"
+py - <<'PY' || fail "ensemble of two seeds"
+import csv
+r = list(csv.DictReader(open("seeds/results/ensemble.csv")))
+assert len(r) == 1 and r[0]["n"] == "2" and r[0]["seeds"] == "1 2", r
+PY
+
+echo "7. variants"
+dpmStudy variants "${short[@]}" -j 1 -variant upwind > log.variants 2>&1 \
+    || { cat log.variants; fail "dpmStudy -variant upwind"; }
+vcase=variants/w0.50_64bar_upwind
+grep -q "div(voidagePhi,U) *Gauss upwind;" $vcase/system/fvSchemes || fail "upwind not applied"
+head -1 $vcase/constant/variant | grep -q "^# variant upwind$" || fail "no record of the variant"
+grep -q "^## upwind" variants/results/variants.md || fail "results/variants.md lacks upwind"
+grep -q ",upwind," variants/results/summary.csv || fail "summary.csv lacks the variant"
+dpmStudy rerun "${short[@]}" -j 1 -variant "$PWD/$vcase/constant/variant" > log.rerun 2>&1 \
+    || { cat log.rerun; fail "rerun from the record"; }
+diff -r -q $vcase/system rerun/w0.50_64bar_upwind/system || fail "the rerun's dictionaries differ"
+cmp $vcase/constant/variant rerun/w0.50_64bar_upwind/constant/variant || fail "the rerun's record differs"
+mkdir -p changed && sed 's/Gauss upwind/Gauss linearUpwind grad(U)/' \
+    "$DPMFOAM2D_PROJECT/tutorials/paperStudy/variants/upwind" > changed/upwind
+dpmStudy variants "${short[@]}" -variant "$PWD/changed/upwind" > log.changed 2>&1 \
+    && fail "a changed variant file was accepted"
+grep -q "the edits differ" log.changed || { cat log.changed; fail "no message on a changed variant"; }
+dpmStudy variants "${short[@]}" -variant upwnid > log.unknown 2>&1 && fail "an unknown variant ran"
+grep -q "no variant 'upwnid' .*the template's variants: .*upwind" log.unknown \
+    || { cat log.unknown; fail "no message on an unknown variant"; }
+echo "system/fvSchemes divSchemes/div(phi,U) Gauss upwind" > changed/wrongEntry
+dpmStudy wrong "${short[@]}" -variant "$PWD/changed/wrongEntry" > log.wrong 2>&1 && fail "a wrong entry ran"
+grep -q "has no entry 'divSchemes/div(phi,U)'" log.wrong || { cat log.wrong; fail "no message on a wrong entry"; }
+pass "dpmStudy runs, resumes after a kill, shares the bed, sums up, sets U0 - Umf, seeds, variants"
