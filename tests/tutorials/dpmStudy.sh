@@ -14,7 +14,8 @@
 #      statistics of dpmBedStatistics), windows.csv (M in windows of -mean
 #      s, checked against the function object's rows), the M(t) figures per pressure and
 #      per mass fraction, indices.png, hydrodynamics.png, snapshots.png;
-#   4. a third run finds everything finished and runs nothing;
+#   4. a third run finds everything finished and runs nothing; -status
+#      shows the bed and both cases done at 0.1 s;
 #   5. -excessVelocity 0.2 gives a case with U0 = Umf + 0.2 m/s;
 #   6. -seeds 2: a bed per seed (packed from seeds 1 and 2: different
 #      beds), each case started from its own seed's bed, an ensemble row
@@ -127,6 +128,13 @@ done
 echo "4. nothing left to run"
 study -noPictures > log.study3 2>&1 || fail "dpmStudy (third run)"
 [ $(grep -c "finished (t = 0.1 s)" log.study3) = 2 ] || { cat log.study3; fail "third run ran something"; }
+dpmStudy study -status > log.status 2>&1 || { cat log.status; fail "dpmStudy -status"; }
+cat log.status
+grep -q "^beds/w0.50 *done" log.status || fail "-status: the bed not done"
+for c in w0.50_1bar w0.50_64bar
+do
+    grep -q "^$c *done *- *0.1 of 0.1 s$" log.status || fail "-status: $c not done at 0.1 s"
+done
 echo "5. a variant study at a given U0 - Umf"
 dpmStudy variant -w 0.5 -p 64 -j 1 -scale 0.05 -settleTime 0.1 -endTime 0.02 \
     -writeInterval 0.02 -mean 0.01 -excessVelocity 0.2 -noPictures > log.variant 2>&1 \
