@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <sstream>
+#include <utility>
 
 namespace dem {
 
@@ -32,26 +33,37 @@ std::string className(const Settings& s, std::size_t k)
     return k < s.classes.size() ? "'" + s.classes[k].name + "'" : std::to_string(k);
 }
 
-std::string boxText(const Box& b)
+std::string text(double value, int digits)
 {
-    return "[" + exactText(b.xMin) + ", " + exactText(b.xMax) + "] x [" + exactText(b.yMin) + ", "
-           + exactText(b.yMax) + "] m";
+    std::ostringstream s;
+    s.precision(digits);
+    s << value;
+    return s.str();
+}
+
+Difference differ(const std::string& name, double inFile, double here, const std::string& unit = "")
+{
+    const auto [a, b] = textsApart(inFile, here);
+    return {name, a + unit, b + unit};
+}
+
+std::pair<std::string, std::string> apart(const Box& a, const Box& b)
+{
+    const auto [x0a, x0b] = textsApart(a.xMin, b.xMin);
+    const auto [x1a, x1b] = textsApart(a.xMax, b.xMax);
+    const auto [y0a, y0b] = textsApart(a.yMin, b.yMin);
+    const auto [y1a, y1b] = textsApart(a.yMax, b.yMax);
+    return {"[" + x0a + ", " + x1a + "] x [" + y0a + ", " + y1a + "] m",
+            "[" + x0b + ", " + x1b + "] x [" + y0b + ", " + y1b + "] m"};
 }
 
 } // namespace
 
-std::string exactText(double value)
+std::pair<std::string, std::string> textsApart(double a, double b)
 {
-    for (int digits = 6; digits < 17; ++digits) {
-        std::ostringstream s;
-        s.precision(digits);
-        s << value;
-        if (std::strtod(s.str().c_str(), nullptr) == value) return s.str();
-    }
-    std::ostringstream s;
-    s.precision(17);
-    s << value;
-    return s.str();
+    int digits = 6;
+    while (a != b && digits < 17 && text(a, digits) == text(b, digits)) ++digits;
+    return {text(a, digits), text(b, digits)};
 }
 
 std::vector<double> settingsKey(const Settings& s, double skin)
@@ -78,17 +90,19 @@ std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
     if (inFile.size() != here.size() || inFile.empty() || inFile[0] != here[0]
         || here.size() != names.size()) {
         // Another number of classes (or a damaged key): the positions do not correspond.
-        const std::string n = inFile.empty() ? std::string("none") : exactText(inFile[0]);
+        const std::string n = inFile.empty() ? std::string("none")
+                                             : std::to_string(static_cast<long>(inFile[0]));
         return {{"number of size classes", n, std::to_string(s.classes.size())}};
     }
     std::vector<Difference> d;
     for (std::size_t k = 0; k + 1 < here.size(); ++k) {   // not the skin
         if (inFile[k] == here[k]) continue;
-        // kt < 0 stands for the default 2/7 kn
-        auto text = [&](double v) {
-            return names[k] == "contact kt" && v < 0 ? exactText(v) + " (2/7 kn)" : exactText(v);
-        };
-        d.push_back({names[k], text(inFile[k]), text(here[k])});
+        Difference e = differ(names[k], inFile[k], here[k]);
+        if (names[k] == "contact kt") {   // kt < 0 stands for the default 2/7 kn
+            if (inFile[k] < 0) e.inFile += " (2/7 kn)";
+            if (here[k] < 0) e.here += " (2/7 kn)";
+        }
+        d.push_back(e);
     }
     return d;
 }
@@ -117,18 +131,17 @@ std::vector<Difference> compareRecipes(const BedRecipe& inFile, const BedRecipe&
     const Box& a = inFile.region;
     const Box& b = here.region;
     if (a.xMin != b.xMin || a.xMax != b.xMax || a.yMin != b.yMin || a.yMax != b.yMax) {
-        d.push_back({"packing region", boxText(a), boxText(b)});
+        const auto [inA, inB] = apart(a, b);
+        d.push_back({"packing region", inA, inB});
     }
     if (inFile.seed != here.seed) {
         d.push_back({"seed", std::to_string(inFile.seed), std::to_string(here.seed)});
     }
     if (inFile.settleTime != here.settleTime) {
-        d.push_back({"settle time", exactText(inFile.settleTime) + " s",
-                     exactText(here.settleTime) + " s"});
+        d.push_back(differ("settle time", inFile.settleTime, here.settleTime, " s"));
     }
     if (inFile.keTolerance != here.keTolerance) {
-        d.push_back({"settling tolerance", exactText(inFile.keTolerance) + " J",
-                     exactText(here.keTolerance) + " J"});
+        d.push_back(differ("settling tolerance", inFile.keTolerance, here.keTolerance, " J"));
     }
     return d;
 }

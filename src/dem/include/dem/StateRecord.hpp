@@ -5,6 +5,7 @@
 #include "dem/Facade.hpp"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dem {
@@ -38,8 +39,8 @@ std::vector<Difference> compareCounts(const std::vector<int>& inFile, const std:
 /// "a = 1 in the file, 2 here; b = ..." (empty if there is no difference).
 std::string describe(const std::vector<Difference>& differences);
 
-/// Shortest decimal text that reads back as the same double (so that two values that
-/// differ never print alike).
-std::string exactText(double value);
+/// Two values as text with the fewest significant digits (6 at least) that tell them
+/// apart, so that values that differ never print alike.
+std::pair<std::string, std::string> textsApart(double a, double b);
 
 } // namespace dem
