@@ -157,3 +157,13 @@ std::string describe(const std::vector<Difference>& differences)
 }
 
 } // namespace dem
+
+namespace dem {
+
+std::string bedDifferences(const Settings& settings, const BedRecipe& inFile,
+                           const BedRecipe& here)
+{
+    return describe(compareRecipes(inFile, here, settings));
+}
+
+} // namespace dem

@@ -163,6 +163,23 @@ void Foam::dpmCloud::initialise(const startMode mode)
     if (isFile(restart))
     {
         guarded("Cannot read the particle state", [&]{ dem_->load(restart); });
+        const dictionary& bed = dict_.subDict("initialBed");
+        if (mode == startMode::run && dem_->recipe() && !bed.found("positions"))
+        {
+            // The particles of a packed bed: still the dictionary's mix?
+            const std::string differ =
+                dem::bedDifferences(dem_->settings(), *dem_->recipe(), bedRecipe());
+            if (!differ.empty())
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "The particle state " << restart << " continues a bed"
+                    << " made for other particles than " << dict_.name()
+                    << " asks for: " << differ.c_str() << nl << bedEntries
+                    << nl << "    To start the new mix, remove the time"
+                    << " directories (and 0/uniform); else restore the entries"
+                    << exit(FatalIOError);
+            }
+        }
         Info<< "Particles: " << size() << " read from " << restart << endl;
         return;
     }

@@ -61,6 +61,11 @@ struct BedRecipe {
 /// (a probe file in the nearest existing directory is created and removed).
 void checkStatePath(const std::string& path);
 
+/// The entries of two bed recipes that differ, as "class 'small' count = 600 in the file,
+/// 500 here; seed = ..." (classes named after `settings`); empty if none.
+std::string bedDifferences(const Settings& settings, const BedRecipe& inFile,
+                           const BedRecipe& here);
+
 class System;
 
 /// A DEM run: particles, walls, contacts; advanced in CFD steps with fluid forces.
