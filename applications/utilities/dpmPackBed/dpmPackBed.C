@@ -15,12 +15,33 @@ Description
 
     A case whose initialBed names a file that does not exist yet packs,
     settles and saves the bed itself when it starts; dpmPackBed does it
-    ahead of time (and always anew).
+    ahead of time.
+
+    The bed records what it was made for (counts per class, packing region,
+    seed, settleTime; diameters, densities, contact settings, box, gravity
+    and DEM step): a case whose particles differ is refused with the
+    difference named.
 
 Usage
-    dpmPackBed [-output <file>]
-    (default: initialBed/file of constant/particleProperties, else
-    constant/packedBed.state)
+    dpmPackBed [-output <file>] [-overwrite]
+
+    -output <file>  where to save the bed (default: initialBed/file of
+                    constant/particleProperties, else
+                    constant/packedBed.state)
+    -overwrite      replace an existing bed whatever it was made for, and
+                    say so (the cases that share it then start from the new
+                    bed)
+
+    If the file exists already:
+      - a bed made for these particles and settings is kept as it is
+        ("kept as it is" in the output, exit 0, nothing packed): running
+        dpmPackBed twice gives the same bed once;
+      - a bed made for others (another count, mass fraction, diameter,
+        seed, ...), an older bed that carries no record, or a file that is
+        no bed is not overwritten: dpmPackBed stops, naming the difference,
+        before packing (exit 1), unless -overwrite.
+    The path is checked before the packing (a directory, a parent that is a
+    file, no permission: an error at once, nothing written).
 
 \*---------------------------------------------------------------------------*/
 
@@ -43,6 +64,12 @@ int main(int argc, char *argv[])
         "Where to save the bed (default initialBed/file, else"
         " constant/packedBed.state)"
     );
+    argList::addBoolOption
+    (
+        "overwrite",
+        "Replace an existing bed even if it was made for other particles or"
+        " settings (else it is kept if made for these, refused otherwise)"
+    );
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -51,7 +78,7 @@ int main(int argc, char *argv[])
     #include "readGravitationalAcceleration.H"
 
     gasProperties gas(mesh);
-    dpmCloud particles
+    dpmCloud particles      // no particles yet: packBed below
     (
         "particles", mesh, gas, g.value(), dpmCloud::startMode::pack
     );
@@ -69,13 +96,21 @@ int main(int argc, char *argv[])
             "file", runTime.constant()/"packedBed.state"
         ).expand()
     );
+    const bool packed = particles.packBed(output, args.found("overwrite"));
     particles.report(Info);
-
-    particles.save(output);
     particles.writeParticles();
 
-    Info<< nl << "Saved the bed of " << particles.size() << " particles to "
-        << output << nl << "End\n" << endl;
+    if (packed)
+    {
+        Info<< nl << "Saved the bed of " << particles.size()
+            << " particles to " << output;
+    }
+    else
+    {
+        Info<< nl << "Kept the bed of " << particles.size()
+            << " particles in " << output;
+    }
+    Info<< nl << "End\n" << endl;
 
     return 0;
 }

@@ -1,6 +1,7 @@
 // Random packing: random sequential addition of non-overlapping particles in a region,
 // largest class first (the small ones then fill the gaps), positions uniform for every
 // class so that the mixture is well mixed. Draws come from dem::Random (reproducible).
+// packBed adds the settling and keeps the recipe, which the state file records.
 
 #include "dem/Random.hpp"
 #include "dem/System.hpp"
@@ -146,6 +147,26 @@ void System::packRandom(const std::vector<int>& countPerClass, const Box& region
     }
     listValid_ = false;
     forcesValid_ = false;
+    recipe_.reset();   // packBed sets it once the bed has settled
+}
+
+double System::packBed(const BedRecipe& recipe)
+{
+    if (p_.size() != 0) {
+        throw Error("packBed: the simulation has " + std::to_string(p_.size())
+                    + " particles already; a bed is packed into an empty one");
+    }
+    if (!(recipe.settleTime >= 0.0) || !std::isfinite(recipe.settleTime)) {
+        throw Error("settle time = " + formatValue(recipe.settleTime) + " s is outside [0, inf)");
+    }
+    if (!(recipe.keTolerance >= 0.0) || !std::isfinite(recipe.keTolerance)) {
+        throw Error("settling tolerance = " + formatValue(recipe.keTolerance)
+                    + " J is outside [0, inf)");
+    }
+    packRandom(recipe.countPerClass, recipe.region, recipe.seed);
+    const double spent = settle(recipe.settleTime, recipe.keTolerance);
+    recipe_ = recipe;
+    return spent;
 }
 
 } // namespace dem

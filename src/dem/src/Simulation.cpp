@@ -11,6 +11,8 @@ void Simulation::packRandom(const std::vector<int>& countPerClass, const Box& re
     system_->packRandom(countPerClass, region, seed);
 }
 
+double Simulation::packBed(const BedRecipe& recipe) { return system_->packBed(recipe); }
+
 void Simulation::addParticle(int classIndex, double x, double y, double vx, double vy, double omega)
 {
     system_->addParticle(classIndex, x, y, vx, vy, omega);
@@ -56,5 +58,10 @@ std::size_t Simulation::memoryBytes() const { return system_->memoryBytes(); }
 
 void Simulation::save(const std::string& path) const { system_->save(path); }
 void Simulation::load(const std::string& path) { system_->load(path); }
+bool Simulation::loadBed(const std::string& path, const BedRecipe& recipe)
+{
+    return system_->loadBed(path, recipe);
+}
+const BedRecipe* Simulation::recipe() const { return system_->recipe(); }
 
 } // namespace dem

@@ -1,21 +1,29 @@
 // Binary state file: everything that the next step reads, so a restarted run continues
 // bit for bit (positions, velocities, forces of the last evaluation, the neighbour list
-// in its order, the contact history, the reference positions of the skin criterion).
-// Version 2 files (before pair blocks) are read too; their list is rebuilt.
+// in its order, the contact history, the reference positions of the skin criterion), and
+// since version 4 the recipe of a packed bed (counts, region, seed, settling), so that a
+// case can check that a bed was made for its particles. Versions 2 and 3 are read too
+// (no recipe; a version-2 list is rebuilt).
 
+#include "dem/StateRecord.hpp"
 #include "dem/System.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <type_traits>
+#include <unistd.h>
 
 namespace dem {
 
 namespace {
 
 constexpr char magic[16] = "dpmFoam2D-dem\n";
-constexpr std::uint32_t version = 3;
+constexpr std::uint32_t version = 4;
+constexpr std::uint32_t version3 = 3;   // no recipe
 constexpr std::uint32_t version2 = 2;   // stored pair forces and a per-particle index; read, list rebuilt
 
 /// Per-pair record of version-2 files, read and dropped.
@@ -23,29 +31,33 @@ struct Version2Force {
     double fx, fy, ft;
 };
 
+/// Writes through C stdio, so that a failure keeps its OS reason (errno).
 class Writer {
 public:
-    explicit Writer(std::ofstream& out) : out_(out) {}
+    explicit Writer(std::FILE* out) : out_(out) {}
     template <class T> void value(const T& v)
     {
         static_assert(std::is_trivially_copyable_v<T>);
-        out_.write(reinterpret_cast<const char*>(&v), sizeof(T));
+        bytes(&v, sizeof(T));
     }
     template <class T> void array(const std::vector<T>& a)
     {
         value(static_cast<std::uint64_t>(a.size()));
-        out_.write(reinterpret_cast<const char*>(a.data()),
-                   static_cast<std::streamsize>(a.size() * sizeof(T)));
+        bytes(a.data(), a.size() * sizeof(T));
     }
-    void text(const std::string& s)
+    void bytes(const void* data, std::size_t n)
     {
-        value(static_cast<std::uint64_t>(s.size()));
-        out_.write(s.data(), static_cast<std::streamsize>(s.size()));
+        if (error_ == 0 && n > 0 && std::fwrite(data, 1, n, out_) != n) error_ = errno ? errno : EIO;
     }
+    /// The first OS error (0: none).
+    int error() const { return error_; }
 
 private:
-    std::ofstream& out_;
+    std::FILE* out_;
+    int error_ = 0;
 };
+
+std::string reason(int error) { return std::strerror(error); }
 
 class Reader {
 public:
@@ -93,85 +105,111 @@ class StateFile {
 public:
     static void save(const System& s, const std::string& path);
     static void load(System& s, const std::string& path);
+    static bool loadBed(System& s, const std::string& path, const BedRecipe& recipe);
 
 private:
-    static std::vector<double> settingsKey(const System& s);
+    static void write(const System& s, Writer& w);
 };
 
-std::vector<double> StateFile::settingsKey(const System& s)
+void StateFile::write(const System& s, Writer& w)
 {
-    // Every setting the trajectory depends on (nThreads does not); the
-    // neighbour skin last, as it only orders the round-off: a state can be
-    // continued with another skin after a fresh neighbour-list build.
-    const Settings& st = s.settings_;
-    std::vector<double> key;
-    key.push_back(static_cast<double>(st.classes.size()));
-    for (const auto& c : st.classes) {
-        key.push_back(c.diameter);
-        key.push_back(c.density);
+    w.bytes(magic, sizeof(magic));
+    w.value(version);
+    // The neighbour skin is last in the key: it only orders the round-off, so a
+    // state can be continued with another skin after a fresh list build.
+    w.array(settingsKey(s.settings_, s.skin_));
+    w.value(static_cast<std::uint8_t>(s.recipe_.has_value()));
+    if (s.recipe_) {
+        w.array(s.recipe_->countPerClass);
+        w.value(s.recipe_->region);
+        w.value(s.recipe_->seed);
+        w.value(s.recipe_->settleTime);
+        w.value(s.recipe_->keTolerance);
     }
-    const ContactSettings& c = st.contact;
-    for (double v : {c.kn, c.kt, c.restitution, c.restitutionWall, c.frictionParticle,
-                     c.frictionWall, st.box.xMin, st.box.xMax, st.box.yMin, st.box.yMax,
-                     st.gravity[0], st.gravity[1], st.dt, s.skin_}) {
-        key.push_back(v);
-    }
-    return key;
+    w.value(s.stepCount_);
+    w.value(s.listBuilds_);
+    w.value(static_cast<std::uint8_t>(s.listValid_));
+    w.value(static_cast<std::uint8_t>(s.forcesValid_));
+    w.value(static_cast<std::uint64_t>(s.contactCount_));
+    w.value(s.maxOverlap_);
+    s.p_.forEachArray([&](const auto& a) { w.array(a); });
+    const PairList& pl = s.pairs_;
+    w.array(pl.i); w.array(pl.j); w.array(pl.law); w.array(pl.xiT);
+    w.array(pl.groupStart);
+    w.array(s.wallContacts_.start); w.array(s.wallContacts_.wall); w.array(s.wallContacts_.xiT);
+    w.bytes(magic, sizeof(magic));   // end marker
 }
 
 void StateFile::save(const System& s, const std::string& path)
 {
+    namespace fs = std::filesystem;
+    auto fail = [&](const std::string& why) {
+        throw Error("cannot write state file '" + path + "': " + why);
+    };
+    const fs::path parent = fs::path(path).parent_path();
+    std::error_code ec;
+    if (!parent.empty() && !fs::is_directory(parent, ec)) {
+        fs::create_directories(parent, ec);
+        if (ec) fail("cannot create directory '" + parent.string() + "': " + ec.message());
+    }
+    // Written beside it, then renamed: a failed write leaves an earlier state whole.
     const std::string tmp = path + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw Error("cannot write state file '" + tmp + "'");
-        Writer w(out);
-        out.write(magic, sizeof(magic));
-        w.value(version);
-        w.array(settingsKey(s));
-        w.value(s.stepCount_);
-        w.value(s.listBuilds_);
-        w.value(static_cast<std::uint8_t>(s.listValid_));
-        w.value(static_cast<std::uint8_t>(s.forcesValid_));
-        w.value(static_cast<std::uint64_t>(s.contactCount_));
-        w.value(s.maxOverlap_);
-        s.p_.forEachArray([&](const auto& a) { w.array(a); });
-        const PairList& pl = s.pairs_;
-        w.array(pl.i); w.array(pl.j); w.array(pl.law); w.array(pl.xiT);
-        w.array(pl.groupStart);
-        w.array(s.wallContacts_.start); w.array(s.wallContacts_.wall); w.array(s.wallContacts_.xiT);
-        out.write(magic, sizeof(magic));   // end marker
-        out.flush();
-        if (!out) throw Error("cannot write state file '" + tmp + "'");
+    std::FILE* out = std::fopen(tmp.c_str(), "wb");
+    if (!out) fail("cannot create '" + tmp + "': " + reason(errno));
+    Writer w(out);
+    write(s, w);
+    int error = w.error();
+    if (std::fflush(out) != 0 && error == 0) error = errno;
+    if (std::fclose(out) != 0 && error == 0) error = errno;
+    if (error != 0) {
+        std::remove(tmp.c_str());
+        fail(reason(error) + " (an earlier file there is left as it was)");
     }
     if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        throw Error("cannot rename state file '" + tmp + "' to '" + path + "'");
+        const int renameError = errno;
+        std::remove(tmp.c_str());
+        fail("cannot rename '" + tmp + "' to it: " + reason(renameError));
     }
 }
 
 void StateFile::load(System& s, const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("cannot open state file '" + path + "'");
+    if (!in) throw Error("cannot open state file '" + path + "': " + reason(errno));
     Reader r(in, path);
     char head[sizeof(magic)];
     in.read(head, sizeof(head));
     if (!in || std::memcmp(head, magic, sizeof(magic)) != 0) r.fail("wrong file type");
     const auto fileVersion = r.value<std::uint32_t>();
-    if (fileVersion != version && fileVersion != version2) {
+    if (fileVersion != version && fileVersion != version3 && fileVersion != version2) {
         r.fail("version " + std::to_string(fileVersion) + ", expected " + std::to_string(version)
-               + " or " + std::to_string(version2));
+               + ", " + std::to_string(version3) + " or " + std::to_string(version2));
     }
     std::vector<double> key;
     r.array(key);
-    const std::vector<double> here = settingsKey(s);
-    if (key.size() != here.size() || !std::equal(here.begin(), here.end() - 1, key.begin())) {
-        throw Error("state file '" + path + "' was written with other settings (classes, "
-                    "contact, box, gravity or dt differ from this Simulation's)");
+    const std::vector<double> here = settingsKey(s.settings_, s.skin_);
+    const std::vector<Difference> differ = compareSettingsKeys(key, here, s.settings_);
+    if (!differ.empty()) {
+        throw Error("state file '" + path + "' was written with other settings: "
+                    + describe(differ));
     }
     const bool sameSkin = key.back() == here.back();
     // Read into a copy so that a bad file leaves the running system untouched.
     System t = s;
+    t.recipe_.reset();
+    if (fileVersion >= 4 && r.value<std::uint8_t>() != 0) {
+        BedRecipe recipe;
+        r.array(recipe.countPerClass);
+        recipe.region = r.value<Box>();
+        recipe.seed = r.value<std::uint64_t>();
+        recipe.settleTime = r.value<double>();
+        recipe.keTolerance = r.value<double>();
+        if (recipe.countPerClass.size() != static_cast<std::size_t>(t.nClasses_)) {
+            r.fail("a bed recipe of " + std::to_string(recipe.countPerClass.size())
+                   + " classes");
+        }
+        t.recipe_ = recipe;
+    }
     t.stepCount_ = r.value<std::int64_t>();
     t.listBuilds_ = r.value<std::int64_t>();
     t.listValid_ = r.value<std::uint8_t>() != 0;
@@ -246,7 +284,58 @@ void StateFile::load(System& s, const std::string& path)
     s = std::move(t);
 }
 
+bool StateFile::loadBed(System& s, const std::string& path, const BedRecipe& recipe)
+{
+    System t = s;
+    load(t, path);
+    std::vector<Difference> differ;
+    if (t.recipe_) {
+        differ = compareRecipes(*t.recipe_, recipe, s.settings_);
+    } else {
+        // No record of how it was made: its counts per class still show a wrong mix.
+        std::vector<int> counts(static_cast<std::size_t>(t.nClasses_), 0);
+        for (int k : t.p_.classIndex) ++counts[static_cast<std::size_t>(k)];
+        differ = compareCounts(counts, recipe.countPerClass, s.settings_);
+    }
+    if (!differ.empty()) {
+        throw Error("bed '" + path + "' was made for other particles: " + describe(differ));
+    }
+    const bool checked = t.recipe_.has_value();
+    s = std::move(t);
+    return checked;
+}
+
+void checkStatePath(const std::string& path)
+{
+    namespace fs = std::filesystem;
+    auto fail = [&](const std::string& why) {
+        throw Error("cannot write state file '" + path + "': " + why);
+    };
+    if (path.empty()) throw Error("no state file name given");
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) {
+        fail("it is a directory; name a file (e.g. '" + (fs::path(path) / "packedBed.state").string()
+             + "')");
+    }
+    // The nearest existing directory on the way (save() creates the rest).
+    fs::path dir = fs::path(path).parent_path();
+    if (dir.empty()) dir = ".";
+    while (!fs::exists(dir, ec) && dir.has_parent_path() && dir.parent_path() != dir) {
+        dir = dir.parent_path();
+    }
+    if (!fs::is_directory(dir, ec)) fail("'" + dir.string() + "' is not a directory");
+    std::string probe = (dir / ".dem.state.probeXXXXXX").string();
+    const int fd = mkstemp(probe.data());
+    if (fd < 0) fail("cannot create a file in '" + dir.string() + "': " + reason(errno));
+    close(fd);
+    std::remove(probe.c_str());
+}
+
 void System::save(const std::string& path) const { StateFile::save(*this, path); }
 void System::load(const std::string& path) { StateFile::load(*this, path); }
+bool System::loadBed(const std::string& path, const BedRecipe& recipe)
+{
+    return StateFile::loadBed(*this, path, recipe);
+}
 
 } // namespace dem

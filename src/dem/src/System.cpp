@@ -104,6 +104,7 @@ void System::addParticle(int cls, double x, double y, double vx, double vy, doub
     p_.append(cls, d, settings_.classes[cls].density, x, y, vx, vy, omega);
     listValid_ = false;
     forcesValid_ = false;
+    recipe_.reset();   // the particles are no longer the recipe's alone
 }
 
 void System::rebuildNeighbourList()

@@ -62,22 +62,6 @@ IOobject fieldIO(const word& name, const fvMesh& mesh, const bool write)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-template<class Call>
-void Foam::dpmCloud::guarded(const char* what, const Call& call) const
-{
-    try
-    {
-        call();
-    }
-    catch (const dem::Error& err)
-    {
-        FatalIOErrorInFunction(dict_)
-            << what << " (settings in " << dict_.name() << "):" << nl
-            << "    " << err.what() << exit(FatalIOError);
-    }
-}
-
-
 Foam::fileName Foam::dpmCloud::stateFile(const word& timeName) const
 {
     return mesh_.time().path()/timeName/"uniform"/"dem.state";
@@ -173,135 +157,6 @@ std::vector<int> Foam::dpmCloud::classCounts() const
         }
     }
     return counts;
-}
-
-
-void Foam::dpmCloud::initialise(const startMode mode)
-{
-    const fileName restart = stateFile(mesh_.time().timeName());
-    if (mode != startMode::pack && isFile(restart))
-    {
-        guarded("Cannot read the particle state", [&]{ dem_->load(restart); });
-        Info<< "Particles: " << size() << " read from " << restart << endl;
-        return;
-    }
-    if
-    (
-        mode == startMode::postProcess
-     || (mode == startMode::run && mesh_.time().value() > 0)
-    )
-    {
-        // A restart without particles (a new bed starts at time 0): the
-        // run was killed while it wrote this time, or the state was removed
-        FatalErrorInFunction
-            << "No particle state " << restart << " for time "
-            << mesh_.time().timeName() << nl
-            << "    The time directory is incomplete (a run killed while"
-            << " writing it?): remove it and restart from an earlier time"
-            << exit(FatalError);
-    }
-
-    const dictionary& bed = dict_.subDict("initialBed");
-    if (mode != startMode::pack && bed.found("positions"))
-    {
-        const fileName file = bed.get<fileName>("positions").expand();
-        readPositions(file);
-        Info<< "Particles: " << size() << " placed from " << file << endl;
-        return;
-    }
-    const fileName bedFile =
-        bed.found("file") ? bed.get<fileName>("file").expand() : fileName();
-    if (mode != startMode::pack && !bedFile.empty() && isFile(bedFile))
-    {
-        guarded("Cannot read the initial bed", [&]{ dem_->load(bedFile); });
-        Info<< "Particles: " << size() << " read from " << bedFile << endl;
-        return;
-    }
-
-    // Random well-mixed packing, then settling under gravity with no gas
-    const std::vector<int> counts = classCounts();
-    const scalar width = grid_.xMax() - grid_.xMin();
-    scalar area = 0;
-    forAll(classNames_, k)
-    {
-        const scalar d = dem_->settings().classes[k].diameter;
-        area += counts[k]*constant::mathematical::pi*d*d/4;
-    }
-    const scalar packHeight = bed.lookupOrDefault<scalar>
-    (
-        "packHeight", min(3*area/width, grid_.yMax() - grid_.yMin())
-    );
-    const label seed = bed.lookupOrDefault<label>("seed", 1);
-    const scalar settleTime = bed.lookupOrDefault<scalar>("settleTime", 1.0);
-
-    Info<< "Particles: packing";
-    forAll(classNames_, k) Info<< ' ' << counts[k] << ' ' << classNames_[k];
-    Info<< " at random in " << width << " x " << packHeight << " m (seed "
-        << seed << "), then " << settleTime << " s of settling" << endl;
-
-    guarded
-    (
-        "Cannot pack the initial bed",
-        [&]
-        {
-            dem_->packRandom
-            (
-                counts,
-                dem::Box
-                {
-                    grid_.xMin(), grid_.xMax(), grid_.yMin(),
-                    grid_.yMin() + packHeight
-                },
-                std::uint64_t(seed)
-            );
-            dem_->settle(settleTime, 0);
-        }
-    );
-    Info<< "Particles: settled, kinetic energy " << dem_->kineticEnergy()
-        << " J, largest overlap " << dem_->maxOverlap() << " m" << endl;
-
-    if (!bedFile.empty() && mode == startMode::run)
-    {
-        save(bedFile);
-        Info<< "Particles: the settled bed saved to " << bedFile
-            << " for cases with the same particles" << endl;
-    }
-}
-
-
-void Foam::dpmCloud::readPositions(const fileName& file)
-{
-    std::ifstream is(file);
-    if (!is.good())
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Cannot read initialBed/positions " << file << " of "
-            << dict_.name() << exit(FatalIOError);
-    }
-    std::string line;
-    label lineNo = 0;
-    while (std::getline(is, line))
-    {
-        ++lineNo;
-        const auto hash = line.find('#');
-        if (hash != std::string::npos) line.erase(hash);
-        std::istringstream fields(line);
-        label classIndex;
-        scalar x, y;
-        if (!(fields >> classIndex >> x >> y)) continue;
-        if (classIndex < 0 || classIndex >= classNames_.size())
-        {
-            FatalIOErrorInFunction(dict_)
-                << file << " line " << lineNo << ": class " << classIndex
-                << " is outside [0, " << classNames_.size() - 1 << "]"
-                << exit(FatalIOError);
-        }
-        guarded
-        (
-            "Cannot place a particle of initialBed/positions",
-            [&]{ dem_->addParticle(classIndex, x, y); }
-        );
-    }
 }
 
 
@@ -811,6 +666,15 @@ bool Foam::dpmCloud::writeObject
 
 void Foam::dpmCloud::save(const fileName& file) const
 {
-    mkDir(file.path());
-    guarded("Cannot write the particle state", [&]{ dem_->save(file); });
+    // The write's own error (file, OS reason), not the settings' file
+    try
+    {
+        dem_->save(file);
+    }
+    catch (const dem::Error& err)
+    {
+        FatalErrorInFunction
+            << "Cannot write the particle state: " << err.what()
+            << exit(FatalError);
+    }
 }

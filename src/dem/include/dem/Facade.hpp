@@ -45,6 +45,27 @@ struct Settings {
     double neighbourSkin = -1.0;
 };
 
+/// How a bed was made: packRandom(countPerClass, region, seed), then settle(settleTime,
+/// keTolerance). Saved with the state (Simulation::packBed), so that a case that reuses the
+/// bed can check it was made for its particles (Simulation::loadBed).
+struct BedRecipe {
+    std::vector<int> countPerClass;    ///< particles of each class
+    Box region;                        ///< packing region, m
+    std::uint64_t seed = 1;            ///< of the random packing
+    double settleTime = 1.0;           ///< longest settling, s
+    double keTolerance = 0.0;          ///< settled below this kinetic energy per particle, J
+};
+
+/// Throws dem::Error naming `path` and the reason (a directory, a parent that is a file,
+/// no permission, ...) if Simulation::save could not write a state there; writes nothing
+/// (a probe file in the nearest existing directory is created and removed).
+void checkStatePath(const std::string& path);
+
+/// The entries of two bed recipes that differ, as "class 'small' count = 600 in the file,
+/// 500 here; seed = ..." (classes named after `settings`); empty if none.
+std::string bedDifferences(const Settings& settings, const BedRecipe& inFile,
+                           const BedRecipe& here);
+
 class System;
 
 /// A DEM run: particles, walls, contacts; advanced in CFD steps with fluid forces.
@@ -60,6 +81,11 @@ public:
     /// Random, well-mixed, non-overlapping packing of countPerClass[k] particles of class k
     /// in `region` (inside the box); reproducible for a given seed.
     void packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed);
+
+    /// Packs and settles a bed as `recipe` says (packRandom, then settle) in an empty
+    /// simulation, and keeps the recipe: save() records it with the bed. Returns the time
+    /// spent settling, s.
+    double packBed(const BedRecipe& recipe);
 
     /// Adds one particle; throws if outside the box or overlapping another by more than
     /// 1 % of the smaller diameter.
@@ -133,11 +159,22 @@ public:
     /// Heap memory held by particle, contact and search arrays, bytes.
     std::size_t memoryBytes() const;
 
-    /// Writes the complete state, contact history included (tmp file, then rename).
+    /// Writes the complete state, contact history included, to `path` + ".tmp", then
+    /// renames it (an earlier state at `path` stays whole if the write fails); creates
+    /// missing parent directories; throws dem::Error naming the file and the OS reason.
     void save(const std::string& path) const;
     /// Reads a state written by save(); throws dem::Error naming the file if it is bad or
     /// was written with other settings.
     void load(const std::string& path);
+    /// Reads a bed saved after packBed() and checks that it was made by `recipe` with these
+    /// settings; throws dem::Error naming the file and every entry that differs (class,
+    /// setting, the file's value and this one), leaving the simulation untouched. A file
+    /// without the record (state version <= 3, or particles not packed) is checked on its
+    /// counts per class only: returns false then, true when fully checked.
+    bool loadBed(const std::string& path, const BedRecipe& recipe);
+    /// The recipe of the particles (packBed, or the file they were loaded from); none if
+    /// they were placed otherwise.
+    const BedRecipe* recipe() const;
 
 private:
     std::unique_ptr<System> system_;

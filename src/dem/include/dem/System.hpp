@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,7 @@ public:
 
     void addParticle(int cls, double x, double y, double vx, double vy, double omega);
     void packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed);
+    double packBed(const BedRecipe& recipe);
 
     void advance(double dtOuter);
     /// Renumbers the particles in the order of the search cells (row by row), so that
@@ -63,6 +65,8 @@ public:
 
     void save(const std::string& path) const;
     void load(const std::string& path);
+    bool loadBed(const std::string& path, const BedRecipe& recipe);
+    const BedRecipe* recipe() const { return recipe_ ? &*recipe_ : nullptr; }
 
 private:
     void buildLaws();
@@ -98,6 +102,7 @@ private:
     std::size_t contactCount_ = 0;
     double maxOverlap_ = 0.0;
     double meanWeight_ = 1.0;           // weight of this sub-step's velocity in the CFD-step mean
+    std::optional<BedRecipe> recipe_;   // how the particles were made, if packBed made them
 
     friend class StateFile;
 };

@@ -1,0 +1,46 @@
+#pragma once
+// What a state file records of its settings and of how its bed was made, and the
+// comparisons that name every entry that differs, for the messages of refused files.
+
+#include "dem/Facade.hpp"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace dem {
+
+/// One recorded entry that differs between a file and the settings it is read with.
+struct Difference {
+    std::string name;     ///< e.g. "class 'small' count"
+    std::string inFile;   ///< the file's value, as text
+    std::string here;     ///< the value asked for now, as text
+};
+
+/// The settings a trajectory depends on, flattened as the state file stores them: number of
+/// classes, diameter and density of each, contact, box, gravity, dt, and the neighbour skin
+/// last (nThreads does not count).
+std::vector<double> settingsKey(const Settings& s, double skin);
+
+/// The entries of two settings keys that differ, named after `s` (the reader's settings),
+/// the skin left out (a state continues with another skin). Keys of another number of
+/// classes give that one difference.
+std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
+                                            const std::vector<double>& here, const Settings& s);
+
+/// The entries of two bed recipes that differ, classes named after `s`.
+std::vector<Difference> compareRecipes(const BedRecipe& inFile, const BedRecipe& here,
+                                       const Settings& s);
+
+/// Counts per class of the particles against those wanted, classes named after `s`.
+std::vector<Difference> compareCounts(const std::vector<int>& inFile, const std::vector<int>& here,
+                                      const Settings& s);
+
+/// "a = 1 in the file, 2 here; b = ..." (empty if there is no difference).
+std::string describe(const std::vector<Difference>& differences);
+
+/// Two values as text with the fewest significant digits (6 at least) that tell them
+/// apart, so that values that differ never print alike.
+std::pair<std::string, std::string> textsApart(double a, double b);
+
+} // namespace dem

@@ -1,0 +1,169 @@
+// The settings key and bed recipe of state files, and the comparisons that say which entry
+// differs (a refused file names the class, the setting, its value and the one asked for).
+
+#include "dem/StateRecord.hpp"
+
+#include <cstdlib>
+#include <sstream>
+#include <utility>
+
+namespace dem {
+
+namespace {
+
+/// Names of the settings key's entries, in its order (the skin last).
+std::vector<std::string> settingsKeyNames(const Settings& s)
+{
+    std::vector<std::string> names{"number of size classes"};
+    for (const auto& c : s.classes) {
+        names.push_back("class '" + c.name + "' diameter");
+        names.push_back("class '" + c.name + "' density");
+    }
+    for (const char* n : {"contact kn", "contact kt", "contact restitution",
+                          "contact restitutionWall", "contact frictionParticle",
+                          "contact frictionWall", "box xMin", "box xMax", "box yMin", "box yMax",
+                          "gravity x", "gravity y", "DEM step dt", "neighbour skin"}) {
+        names.emplace_back(n);
+    }
+    return names;
+}
+
+std::string className(const Settings& s, std::size_t k)
+{
+    return k < s.classes.size() ? "'" + s.classes[k].name + "'" : std::to_string(k);
+}
+
+std::string text(double value, int digits)
+{
+    std::ostringstream s;
+    s.precision(digits);
+    s << value;
+    return s.str();
+}
+
+Difference differ(const std::string& name, double inFile, double here, const std::string& unit = "")
+{
+    const auto [a, b] = textsApart(inFile, here);
+    return {name, a + unit, b + unit};
+}
+
+std::pair<std::string, std::string> apart(const Box& a, const Box& b)
+{
+    const auto [x0a, x0b] = textsApart(a.xMin, b.xMin);
+    const auto [x1a, x1b] = textsApart(a.xMax, b.xMax);
+    const auto [y0a, y0b] = textsApart(a.yMin, b.yMin);
+    const auto [y1a, y1b] = textsApart(a.yMax, b.yMax);
+    return {"[" + x0a + ", " + x1a + "] x [" + y0a + ", " + y1a + "] m",
+            "[" + x0b + ", " + x1b + "] x [" + y0b + ", " + y1b + "] m"};
+}
+
+} // namespace
+
+std::pair<std::string, std::string> textsApart(double a, double b)
+{
+    int digits = 6;
+    while (a != b && digits < 17 && text(a, digits) == text(b, digits)) ++digits;
+    return {text(a, digits), text(b, digits)};
+}
+
+std::vector<double> settingsKey(const Settings& s, double skin)
+{
+    std::vector<double> key;
+    key.push_back(static_cast<double>(s.classes.size()));
+    for (const auto& c : s.classes) {
+        key.push_back(c.diameter);
+        key.push_back(c.density);
+    }
+    const ContactSettings& c = s.contact;
+    for (double v : {c.kn, c.kt, c.restitution, c.restitutionWall, c.frictionParticle,
+                     c.frictionWall, s.box.xMin, s.box.xMax, s.box.yMin, s.box.yMax,
+                     s.gravity[0], s.gravity[1], s.dt, skin}) {
+        key.push_back(v);
+    }
+    return key;
+}
+
+std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
+                                            const std::vector<double>& here, const Settings& s)
+{
+    const std::vector<std::string> names = settingsKeyNames(s);
+    if (inFile.size() != here.size() || inFile.empty() || inFile[0] != here[0]
+        || here.size() != names.size()) {
+        // Another number of classes (or a damaged key): the positions do not correspond.
+        const std::string n = inFile.empty() ? std::string("none")
+                                             : std::to_string(static_cast<long>(inFile[0]));
+        return {{"number of size classes", n, std::to_string(s.classes.size())}};
+    }
+    std::vector<Difference> d;
+    for (std::size_t k = 0; k + 1 < here.size(); ++k) {   // not the skin
+        if (inFile[k] == here[k]) continue;
+        Difference e = differ(names[k], inFile[k], here[k]);
+        if (names[k] == "contact kt") {   // kt < 0 stands for the default 2/7 kn
+            if (inFile[k] < 0) e.inFile += " (2/7 kn)";
+            if (here[k] < 0) e.here += " (2/7 kn)";
+        }
+        d.push_back(e);
+    }
+    return d;
+}
+
+std::vector<Difference> compareCounts(const std::vector<int>& inFile, const std::vector<int>& here,
+                                      const Settings& s)
+{
+    if (inFile.size() != here.size()) {
+        return {{"number of size classes", std::to_string(inFile.size()),
+                 std::to_string(here.size())}};
+    }
+    std::vector<Difference> d;
+    for (std::size_t k = 0; k < here.size(); ++k) {
+        if (inFile[k] != here[k]) {
+            d.push_back({"class " + className(s, k) + " count", std::to_string(inFile[k]),
+                         std::to_string(here[k])});
+        }
+    }
+    return d;
+}
+
+std::vector<Difference> compareRecipes(const BedRecipe& inFile, const BedRecipe& here,
+                                       const Settings& s)
+{
+    std::vector<Difference> d = compareCounts(inFile.countPerClass, here.countPerClass, s);
+    const Box& a = inFile.region;
+    const Box& b = here.region;
+    if (a.xMin != b.xMin || a.xMax != b.xMax || a.yMin != b.yMin || a.yMax != b.yMax) {
+        const auto [inA, inB] = apart(a, b);
+        d.push_back({"packing region", inA, inB});
+    }
+    if (inFile.seed != here.seed) {
+        d.push_back({"seed", std::to_string(inFile.seed), std::to_string(here.seed)});
+    }
+    if (inFile.settleTime != here.settleTime) {
+        d.push_back(differ("settle time", inFile.settleTime, here.settleTime, " s"));
+    }
+    if (inFile.keTolerance != here.keTolerance) {
+        d.push_back(differ("settling tolerance", inFile.keTolerance, here.keTolerance, " J"));
+    }
+    return d;
+}
+
+std::string describe(const std::vector<Difference>& differences)
+{
+    std::string text;
+    for (const Difference& d : differences) {
+        if (!text.empty()) text += "; ";
+        text += d.name + " = " + d.inFile + " in the file, " + d.here + " here";
+    }
+    return text;
+}
+
+} // namespace dem
+
+namespace dem {
+
+std::string bedDifferences(const Settings& settings, const BedRecipe& inFile,
+                           const BedRecipe& here)
+{
+    return describe(compareRecipes(inFile, here, settings));
+}
+
+} // namespace dem

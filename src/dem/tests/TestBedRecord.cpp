@@ -1,0 +1,310 @@
+// Beds carry what they were made for (issue 13): a saved bed records its recipe (counts,
+// packing region, seed, settling), a bed made otherwise is refused with the entry that
+// differs named, state-file mismatches name the setting, and a failed write names the file
+// and the OS reason and leaves an earlier state whole.
+
+#include "TestHelpers.hpp"
+#include "dem/StateRecord.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+using namespace dem;
+using namespace dem::test;
+
+namespace {
+
+const Box box{0.0, 0.03, 0.0, 0.1};
+
+Settings settings()
+{
+    Settings s = paperSettings(box);
+    s.gravity[1] = -9.81;
+    return s;
+}
+
+BedRecipe recipe()
+{
+    BedRecipe r;
+    r.countPerClass = {120, 40};
+    r.region = {0.0, 0.03, 0.0, 0.04};
+    r.seed = 42;
+    r.settleTime = 0.002;
+    return r;
+}
+
+std::string tempPath(const std::string& name) { return testing::TempDir() + name; }
+
+std::string bytesOf(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void writeBytes(const std::string& path, const std::string& bytes)
+{
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+/// The message of the dem::Error that `call` throws ("" if none).
+template <class Call> std::string errorOf(Call&& call)
+{
+    try {
+        call();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+/// A packed bed saved to `path`.
+void saveBed(const std::string& path, const BedRecipe& r = recipe())
+{
+    Simulation sim(settings());
+    sim.packBed(r);
+    sim.save(path);
+}
+
+} // namespace
+
+TEST(BedRecord, SameRecipeLoadsTheBed)
+{
+    const std::string path = tempPath("bedSame.state");
+    Simulation made(settings());
+    made.packBed(recipe());
+    made.save(path);
+
+    Simulation used(settings());
+    EXPECT_TRUE(used.loadBed(path, recipe()));
+    ASSERT_EQ(used.size(), 160u);
+    EXPECT_EQ(std::memcmp(used.y(), made.y(), used.size() * sizeof(double)), 0);
+    ASSERT_NE(used.recipe(), nullptr);
+    EXPECT_EQ(used.recipe()->seed, 42u);
+    std::remove(path.c_str());
+}
+
+TEST(BedRecord, AnotherCountIsNamed)
+{
+    const std::string path = tempPath("bedCount.state");
+    saveBed(path);
+    BedRecipe other = recipe();
+    other.countPerClass[0] = 200;
+    Simulation sim(settings());
+    const std::string what = errorOf([&] { sim.loadBed(path, other); });
+    EXPECT_NE(what.find(path), std::string::npos) << what;
+    EXPECT_NE(what.find("class 'small' count = 120 in the file, 200 here"), std::string::npos)
+        << what;
+    EXPECT_EQ(what.find("class 'large'"), std::string::npos) << what;
+    EXPECT_EQ(sim.size(), 0u);   // untouched
+    std::remove(path.c_str());
+}
+
+TEST(BedRecord, AnotherSeedSettlingOrRegionIsNamed)
+{
+    const std::string path = tempPath("bedSeed.state");
+    saveBed(path);
+    BedRecipe seed = recipe();
+    seed.seed = 7;
+    Simulation sim(settings());
+    std::string what = errorOf([&] { sim.loadBed(path, seed); });
+    EXPECT_NE(what.find("seed = 42 in the file, 7 here"), std::string::npos) << what;
+
+    BedRecipe settle = recipe();
+    settle.settleTime = 0.003;
+    what = errorOf([&] { sim.loadBed(path, settle); });
+    EXPECT_NE(what.find("settle time = 0.002 s in the file, 0.003 s here"), std::string::npos)
+        << what;
+
+    BedRecipe region = recipe();
+    region.region.yMax = 0.05;
+    what = errorOf([&] { sim.loadBed(path, region); });
+    EXPECT_NE(what.find("packing region = [0, 0.03] x [0, 0.04] m in the file, "
+                        "[0, 0.03] x [0, 0.05] m here"),
+              std::string::npos)
+        << what;
+
+    // Every difference at once, not only the first.
+    BedRecipe both = seed;
+    both.countPerClass[1] = 41;
+    what = errorOf([&] { sim.loadBed(path, both); });
+    EXPECT_NE(what.find("class 'large' count = 40 in the file, 41 here; seed = 42"),
+              std::string::npos)
+        << what;
+    std::remove(path.c_str());
+}
+
+TEST(BedRecord, AnotherDiameterIsNamed)
+{
+    const std::string path = tempPath("bedDiameter.state");
+    saveBed(path);
+    Settings s = settings();
+    s.classes[0].diameter = 1.6e-3;
+    Simulation sim(s);
+    const std::string what = errorOf([&] { sim.loadBed(path, recipe()); });
+    EXPECT_NE(what.find("other settings: class 'small' diameter = 0.0015 in the file, 0.0016 here"),
+              std::string::npos)
+        << what;
+    std::remove(path.c_str());
+}
+
+TEST(BedRecord, RestartMismatchNamesTheSetting)
+{
+    // A restart state (no recipe needed) read with changed settings.
+    const std::string path = tempPath("restartMismatch.state");
+    saveBed(path);
+    Settings s = settings();
+    s.contact.restitution = 0.9;
+    s.dt = 2e-5;
+    Simulation sim(s);
+    std::string what = errorOf([&] { sim.load(path); });
+    EXPECT_NE(what.find(path), std::string::npos) << what;
+    EXPECT_NE(what.find("contact restitution = 0.97 in the file, 0.9 here; DEM step dt = 1e-05 "
+                        "in the file, 2e-05 here"),
+              std::string::npos)
+        << what;
+
+    Settings three = settings();
+    three.classes.push_back({"medium", 2e-3, rho});
+    Simulation sim3(three);
+    what = errorOf([&] { sim3.load(path); });
+    EXPECT_NE(what.find("number of size classes = 2 in the file, 3 here"), std::string::npos)
+        << what;
+
+    // The recipe goes on with the particles into restart states.
+    Simulation same(settings());
+    same.load(path);
+    ASSERT_NE(same.recipe(), nullptr);
+    EXPECT_EQ(same.recipe()->countPerClass, recipe().countPerClass);
+    std::remove(path.c_str());
+}
+
+TEST(BedRecord, VersionThreeBedIsCheckedOnItsCounts)
+{
+    // A version-3 file: the version-4 layout without the recipe flag.
+    const std::string path = tempPath("bedVersion3.state");
+    Simulation sim(settings());
+    sim.packRandom(recipe().countPerClass, recipe().region, 42);
+    EXPECT_EQ(sim.recipe(), nullptr);
+    sim.save(path);
+    std::string bytes = bytesOf(path);
+    const std::uint32_t three = 3;
+    std::memcpy(&bytes[16], &three, sizeof(three));
+    std::uint64_t keyLength;
+    std::memcpy(&keyLength, &bytes[20], sizeof(keyLength));
+    const std::size_t flag = 28 + keyLength * sizeof(double);
+    ASSERT_EQ(bytes[flag], 0);
+    bytes.erase(flag, 1);
+    writeBytes(path, bytes);
+
+    Simulation old(settings());
+    EXPECT_FALSE(old.loadBed(path, recipe()));   // counts match: read, not fully checked
+    EXPECT_EQ(old.size(), 160u);
+    EXPECT_EQ(old.recipe(), nullptr);
+
+    BedRecipe other = recipe();
+    other.countPerClass = {600, 130};
+    Simulation refused(settings());
+    const std::string what = errorOf([&] { refused.loadBed(path, other); });
+    EXPECT_NE(what.find("class 'small' count = 120 in the file, 600 here; class 'large' count = "
+                        "40 in the file, 130 here"),
+              std::string::npos)
+        << what;
+    std::remove(path.c_str());
+}
+
+TEST(BedRecord, PackBedNeedsAnEmptySimulation)
+{
+    Simulation sim(settings());
+    sim.addParticle(0, 0.01, 0.01);
+    const std::string what = errorOf([&] { sim.packBed(recipe()); });
+    EXPECT_NE(what.find("particles already"), std::string::npos) << what;
+
+    // A particle added to a packed bed: the recipe no longer describes it.
+    Simulation packed(settings());
+    packed.packBed(recipe());
+    ASSERT_NE(packed.recipe(), nullptr);
+    packed.addParticle(0, 0.015, 0.095);
+    EXPECT_EQ(packed.recipe(), nullptr);
+}
+
+TEST(BedRecord, FailedWriteNamesFileAndReasonAndKeepsTheEarlierState)
+{
+    namespace fs = std::filesystem;
+    const std::string dir = tempPath("bedWrite");
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string path = dir + "/bed.state";
+    saveBed(path);
+    const std::string before = bytesOf(path);
+
+    // The temporary cannot be created (a directory is in its place).
+    fs::create_directory(path + ".tmp");
+    Simulation other(settings());
+    other.packBed([] { BedRecipe r = recipe(); r.seed = 3; return r; }());
+    std::string what = errorOf([&] { other.save(path); });
+    EXPECT_NE(what.find("cannot write state file '" + path + "'"), std::string::npos) << what;
+    EXPECT_NE(what.find("Is a directory"), std::string::npos) << what;
+    EXPECT_EQ(bytesOf(path), before);
+    fs::remove(path + ".tmp");
+
+    // The target is a directory: the rename fails, no stray temporary is left.
+    const std::string intoDir = dir + "/aDirectory";
+    fs::create_directory(intoDir);
+    what = errorOf([&] { other.save(intoDir); });
+    EXPECT_NE(what.find("cannot write state file '" + intoDir + "'"), std::string::npos) << what;
+    EXPECT_FALSE(fs::exists(intoDir + ".tmp"));
+
+    // A parent that is a regular file.
+    what = errorOf([&] { other.save(path + "/sub/bed.state"); });
+    EXPECT_NE(what.find("cannot write state file '" + path + "/sub/bed.state'"),
+              std::string::npos)
+        << what;
+    EXPECT_NE(what.find("ot a directory"), std::string::npos) << what;
+
+    // Missing parent directories are made.
+    other.save(dir + "/new/deeper/bed.state");
+    EXPECT_TRUE(fs::is_regular_file(dir + "/new/deeper/bed.state"));
+    fs::remove_all(dir);
+}
+
+TEST(BedRecord, CheckStatePathWritesNothing)
+{
+    namespace fs = std::filesystem;
+    const std::string dir = tempPath("bedCheckPath");
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+
+    std::string what = errorOf([&] { checkStatePath(dir); });
+    EXPECT_NE(what.find("'" + dir + "': it is a directory"), std::string::npos) << what;
+
+    const std::string file = dir + "/aFile";
+    writeBytes(file, "x");
+    what = errorOf([&] { checkStatePath(file + "/bed.state"); });
+    EXPECT_NE(what.find("'" + file + "' is not a directory"), std::string::npos) << what;
+
+    EXPECT_EQ(errorOf([&] { checkStatePath(dir + "/missing/bed.state"); }), "");
+    EXPECT_EQ(errorOf([&] { checkStatePath(dir + "/bed.state"); }), "");
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+
+    what = errorOf([&] { checkStatePath("/proc/bed.state"); });
+    EXPECT_NE(what.find("cannot write state file '/proc/bed.state': cannot create a file in "
+                        "'/proc'"),
+              std::string::npos)
+        << what;
+    fs::remove_all(dir);
+}
+
+TEST(BedRecord, CloseValuesPrintApart)
+{
+    using Texts = std::pair<std::string, std::string>;
+    EXPECT_EQ(textsApart(0.0849211764173491, 0.0760854470791278), Texts("0.0849212", "0.0760854"));
+    EXPECT_EQ(textsApart(1e-5, 2e-5), Texts("1e-05", "2e-05"));
+    const Texts close = textsApart(0.1 + 0.2, 0.3);
+    EXPECT_NE(close.first, close.second);
+}
