@@ -2,6 +2,7 @@
 #include "gasProperties.H"
 #include "fluidization.H"
 #include "positiveEntry.H"
+#include "caseChecks.H"
 #include "emptyFvPatch.H"
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
@@ -184,6 +185,14 @@ void Foam::dpmCloud::initialise(const startMode mode)
         guarded("Cannot read the particle state", [&]{ dem_->load(restart); });
         Info<< "Particles: " << size() << " read from " << restart << endl;
         return;
+    }
+    if (mode == startMode::postProcess && !hasParticleStates())
+    {
+        FatalErrorInFunction
+            << "Nothing to post-process in " << mesh_.time().path()
+            << ": no time directory has a particle state (uniform/dem.state);"
+            << " the case has not been run. Run dpmFoam2D first"
+            << exit(FatalError);
     }
     if
     (
@@ -409,12 +418,17 @@ Foam::dpmCloud::dpmCloud
             << exit(FatalIOError);
     }
 
+    checkEntries();
+    caseChecks::gravity(g_);
+    caseChecks::bedGeometry(mesh_, grid_);
+
     const dem::Settings settings = demSettings();
     guarded
     (
         "Invalid particle settings",
         [&]{ dem_.reset(new dem::Simulation(settings)); }
     );
+    checkSettings(gas, mode);
 
     subSteps();         // the DEM step must divide the CFD step
     initialise(mode);
