@@ -629,7 +629,14 @@ void Foam::dpmCloud::advance()
     }
 
     const scalar dtGas = mesh_.time().deltaTValue();
-    guarded("The particles cannot advance", [&]{ dem_->advance(dtGas); });
+    // A particle leaves the box only when pushed through a wall in one step
+    guarded
+    (
+        "The particles cannot advance (a particle that left the box went"
+        " through a wall: a gas too fast, U0 of constant/gasProperties, or"
+        " contacts too soft for the speeds, kn of contact)",
+        [&]{ dem_->advance(dtGas); }
+    );
 }
 
 
