@@ -27,6 +27,7 @@ Usage
 #include "fluidization.H"
 #include "dpmCloud.H"
 #include "solverTimers.H"
+#include "caseChecks.H"
 #include "fixedValueFvPatchFields.H"
 
 #define PIMPLE_CONTROL
@@ -51,6 +52,7 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+    caseChecks::serialRun(args.executable());    // threads, not MPI
     #include "createTime.H"
     Sout.precision(8);      // a readable log; fields keep writePrecision
     #include "createMesh.H"

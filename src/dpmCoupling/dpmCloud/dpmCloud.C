@@ -2,6 +2,7 @@
 #include "gasProperties.H"
 #include "fluidization.H"
 #include "positiveEntry.H"
+#include "caseChecks.H"
 #include "emptyFvPatch.H"
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
@@ -264,12 +265,17 @@ Foam::dpmCloud::dpmCloud
             << exit(FatalIOError);
     }
 
+    checkEntries();
+    caseChecks::gravity(g_);
+    caseChecks::bedGeometry(mesh_, grid_);
+
     const dem::Settings settings = demSettings();
     guarded
     (
         "Invalid particle settings",
         [&]{ dem_.reset(new dem::Simulation(settings)); }
     );
+    checkSettings(gas, mode);
 
     subSteps();         // the DEM step must divide the CFD step
     initialise(mode);
@@ -470,7 +476,14 @@ void Foam::dpmCloud::advance()
     }
 
     const scalar dtGas = mesh_.time().deltaTValue();
-    guarded("The particles cannot advance", [&]{ dem_->advance(dtGas); });
+    // A particle leaves the box only when pushed through a wall in one step
+    guarded
+    (
+        "The particles cannot advance (a particle that left the box went"
+        " through a wall: a gas too fast, U0 of constant/gasProperties, or"
+        " contacts too soft for the speeds, kn of contact)",
+        [&]{ dem_->advance(dtGas); }
+    );
 }
 
 

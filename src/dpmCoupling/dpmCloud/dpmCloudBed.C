@@ -183,6 +183,14 @@ void Foam::dpmCloud::initialise(const startMode mode)
         Info<< "Particles: " << size() << " read from " << restart << endl;
         return;
     }
+    if (mode == startMode::postProcess && !hasParticleStates())
+    {
+        FatalErrorInFunction
+            << "Nothing to post-process in " << mesh_.time().path()
+            << ": no time directory has a particle state (uniform/dem.state);"
+            << " the case has not been run. Run dpmFoam2D first"
+            << exit(FatalError);
+    }
     if
     (
         mode == startMode::postProcess

@@ -1,7 +1,23 @@
 #include "gasProperties.H"
 #include "positiveEntry.H"
+#include "knownEntries.H"
 #include "Time.H"
 #include "OStringStream.H"
+
+// * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+const Foam::wordList& Foam::gasProperties::entries()
+{
+    static const wordList names
+    {
+        "operatingPressure", "densityAtOneBar", "viscosity", "U0byUmf",
+        "excessVelocity", "inletPatch"
+    };
+    return names;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::gasProperties::gasProperties(const objectRegistry& obr)
 :
@@ -23,6 +39,14 @@ Foam::gasProperties::gasProperties(const objectRegistry& obr)
     excessVelocity_(-1),
     inletPatch_(lookupOrDefault<word>("inletPatch", "inlet"))
 {
+    checkKnownEntries
+    (
+        *this, entries(), "constant/gasProperties",
+        settingsEntries(objectPath(), obr.time()),
+        "and the entries of #included settings files and of"
+        " constant/caseSettings"
+    );
+
     const bool byRatio = found("U0byUmf");
     const bool byExcess = found("excessVelocity");
     if (byRatio == byExcess)

@@ -5,6 +5,7 @@
 #include "laceyIndex.H"
 #include "dpmCloud.H"
 #include "addToRunTimeSelectionTable.H"
+#include "knownEntries.H"
 
 #include <cmath>
 #include <stdexcept>
@@ -241,6 +242,25 @@ bool Foam::functionObjects::laceyIndex::read(const dictionary& dict)
     fvMeshFunctionObject::read(dict);
     writeFile::read(dict);
     dict_ = dict;
+
+    // Its own entries, and those every function object may have (v1912's
+    // functionObject, timeControl, regionFunctionObject, writeFile)
+    static const wordList known{"cloud", "cellSize", "box", "varianceBasis"};
+    static const wordHashSet common
+    {
+        "type", "libs", "functionObjectLibs", "enabled", "log", "region",
+        "subRegion", "timeStart", "timeEnd", "triggerStart", "triggerEnd",
+        "controlMode", "deltaTCoeff", "nStepsToStartTimeChange",
+        "executeControl", "executeInterval", "writeControl", "writeInterval",
+        "outputControl", "outputInterval", "writePrecision", "writeToFile",
+        "useUserTime"
+    };
+    checkKnownEntries
+    (
+        dict, known, "function object '" + name() + "' (type laceyIndex)",
+        common, "and those of every function object: type libs writeControl"
+        " writeInterval timeStart timeEnd log writePrecision writeToFile ..."
+    );
 
     cloudName_ = dict.lookupOrDefault<word>("cloud", "particles");
 

@@ -4,6 +4,7 @@
 
 #include "bandedCholesky.H"
 #include "addToRunTimeSelectionTable.H"
+#include "knownEntries.H"
 
 #include <limits>
 
@@ -41,6 +42,17 @@ Foam::bandedCholesky::bandedCholesky
     ),
     maxBandwidth_(solverControls.lookupOrDefault<label>("maxBandwidth", 200))
 {
+    // Its own entries and those lduMatrix::solver and fvMatrix::solve read
+    checkKnownEntries
+    (
+        solverControls,
+        {
+            "solver", "tolerance", "relTol", "maxBandwidth", "maxIter",
+            "minIter", "type"
+        },
+        "system/fvSolution solvers/" + fieldName + " (solver bandedCholesky)"
+    );
+
     if (maxBandwidth_ < 1)
     {
         FatalIOErrorInFunction(solverControls)

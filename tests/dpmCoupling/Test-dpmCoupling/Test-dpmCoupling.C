@@ -6,7 +6,8 @@ Description
     Checks of the coupling library against numbers from outside the code:
     circle geometry, the Hoomans voidage of close packings, Wen-Yu's Umf of
     the paper's Table 3, Stokes' law, the Ergun equation and the Dallavalle
-    drag of a single sphere. Run in a case with the paper's 20 x 120 mesh.
+    drag of a single sphere; the unknown-entry check (knownEntries.H). Run
+    in a case with the paper's 20 x 120 mesh.
     Ends with the line "N passed, M failed".
 
 \*---------------------------------------------------------------------------*/
@@ -16,6 +17,7 @@ Description
 #include "fluidization.H"
 #include "dragModel.H"
 #include "Random.H"
+#include "knownEntries.H"
 
 using namespace Foam;
 
@@ -162,6 +164,37 @@ int main(int argc, char *argv[])
         diFelice->dragCoefficient(scalarField(1, 1.0), dd, scalarField(1, slip), K);
         const scalar Cd = sqr(0.63 + 4.8/std::sqrt(Re));
         check("Di Felice at eps = 1: Dallavalle drag", K[0]*slip, 0.5*Cd*rho*0.25*pi*d*d*slip*slip, 1e-12);
+    }
+
+    // Unknown entries: the edit distance, and what passes and what does not
+    {
+        check("edit distance restitutoin/restitution", editDistance("restitutoin", "restitution"), 2, 0);
+        check("edit distance nThread/nThreads", editDistance("nThread", "nThreads"), 1, 0);
+        check("edit distance to an empty word", editDistance("", "kn"), 2, 0);
+
+        const wordList known{"kn", "kt", "restitution"};
+        auto message = [&](const string& text)
+        {
+            IStringStream is(text);
+            const dictionary dict(is);
+            FatalIOError.throwExceptions();
+            try
+            {
+                checkKnownEntries(dict, known, "contact", wordHashSet{"wSmall"});
+            }
+            catch (const IOerror& err)
+            {
+                FatalIOError.dontThrowExceptions();
+                return string(err.message());
+            }
+            FatalIOError.dontThrowExceptions();
+            return string();
+        };
+        check("known entries, a pattern, a settings entry pass", message("kn 1; \"(kt|restitution)\" 0.5; wSmall 0.5;").empty(), 1, 0);
+        const string m = message("kn 1; restitutoin 0.9;");
+        Info<< "    message: " << m.c_str() << endl;
+        check("a misspelling names the nearest entry", m.find("unknown entry 'restitutoin' in contact; did you mean 'restitution'?") != string::npos, 1, 0);
+        check("a pattern matching no entry is unknown", message("\"kx.*\" 1;").empty(), 0, 0);
     }
 
     Info<< nl << nPassed << " passed, " << nFailed << " failed" << endl;

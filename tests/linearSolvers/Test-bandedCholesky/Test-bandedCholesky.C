@@ -42,7 +42,10 @@ static dictionary solverControls(const word& solver, const label maxBandwidth)
 {
     dictionary dict;
     dict.add("solver", solver);
-    dict.add("preconditioner", "DIC");
+    if (solver != "bandedCholesky")
+    {
+        dict.add("preconditioner", "DIC");  // bandedCholesky refuses it
+    }
     dict.add("tolerance", 1e-14);
     dict.add("relTol", 0.0);
     dict.add("maxIter", 100000);

@@ -1,6 +1,7 @@
 #include "DiFelice.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
+#include "knownEntries.H"
 
 namespace Foam
 {
@@ -14,13 +15,19 @@ namespace dragModels
 
 Foam::dragModels::DiFelice::DiFelice
 (
-    const dictionary&,
+    const dictionary& coeffs,
     const scalar rho,
     const scalar mu
 )
 :
     dragModel(rho, mu)
-{}
+{
+    checkKnownEntries
+    (
+        coeffs, wordList(),
+        "constant/particleProperties/" + typeName + "Coeffs"
+    );
+}
 
 
 void Foam::dragModels::DiFelice::dragCoefficient

@@ -2,6 +2,7 @@
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
 #include "positiveEntry.H"
+#include "knownEntries.H"
 
 namespace Foam
 {
@@ -25,7 +26,13 @@ Foam::dragModels::ErgunWenYu::ErgunWenYu
     (
         boundedEntryOrDefault(coeffs, "switchVoidage", 0.8, 0, 1, true)
     )
-{}
+{
+    checkKnownEntries
+    (
+        coeffs, {"switchVoidage"},
+        "constant/particleProperties/" + typeName + "Coeffs"
+    );
+}
 
 
 void Foam::dragModels::ErgunWenYu::dragCoefficient

@@ -1,0 +1,201 @@
+#include "caseChecks.H"
+#include "knownEntries.H"
+#include "Time.H"
+#include "Pstream.H"
+#include "unitConversion.H"
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <thread>
+#include <sched.h>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- The value of `key` in dict if it is a plain number
+bool plainNumber(const dictionary& dict, const word& key, scalar& value)
+{
+    const entry* e = dict.findEntry(key, keyType::LITERAL);
+    if (!e || !e->isStream()) return false;
+    ITstream& is = e->stream();
+    if (is.size() != 1 || !is[0].isNumber()) return false;
+    value = is[0].number();
+    return true;
+}
+
+//- Processes of an MPI launch, 1 without one (mpirun sets these)
+label launchedProcesses()
+{
+    for (const char* var : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"})
+    {
+        const char* value = std::getenv(var);
+        if (value && std::atoi(value) > 1) return std::atoi(value);
+    }
+    return 1;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+const Foam::wordList& Foam::caseChecks::bedGeometryEntries()
+{
+    static const wordList names{"width", "height", "depth", "nx", "ny"};
+    return names;
+}
+
+
+void Foam::caseChecks::gravity(const vector& g)
+{
+    const char* fix = "the fix: value (0 -9.81 0); in constant/g";
+    if (mag(g) < VSMALL)
+    {
+        FatalErrorInFunction
+            << "Gravity g = " << g << " in constant/g is zero: a fluidized"
+            << " bed needs gravity (the bed's weight, its settling, Umf); "
+            << fix << exit(FatalError);
+    }
+    if (mag(g.z()) > 0)
+    {
+        FatalErrorInFunction
+            << "Gravity g = " << g << " in constant/g has a z component:"
+            << " the bed lies in the x-y plane (z is the one-cell thickness),"
+            << " so the particles would not feel it; " << fix
+            << exit(FatalError);
+    }
+    if (!(g.y() < 0))
+    {
+        FatalErrorInFunction
+            << "Gravity g = " << g << " in constant/g does not point down the"
+            << " column (-y): the particles would not rest on the"
+            << " distributor at the bottom; " << fix << exit(FatalError);
+    }
+    if (mag(g.x()) > 0)
+    {
+        WarningInFunction
+            << "Gravity g = " << g << " in constant/g is tilted by "
+            << radToDeg(std::atan2(mag(g.x()), -g.y())) << " degrees from -y:"
+            << " the column is simulated tilted; " << fix << endl;
+    }
+}
+
+
+void Foam::caseChecks::bedGeometry
+(
+    const fvMesh& mesh,
+    const cartesianGrid2D& grid
+)
+{
+    const fileName systemDir(mesh.time().path()/mesh.time().system());
+    const fileName file(systemDir/"bedGeometry");
+    if (!isFile(file)) return;
+
+    const dictionary bed(readDictionary(file));
+    checkKnownEntries(bed, bedGeometryEntries(), "system/bedGeometry");
+
+    // blockMeshDict may scale the geometry: its `scale 0.001;` (or the
+    // older convertToMeters), if written as a number
+    scalar scale = 1;
+    {
+        std::ifstream is(systemDir/"blockMeshDict");
+        std::stringstream text;
+        text << is.rdbuf();
+        const std::string s(text.str());
+        std::smatch match;
+        const std::regex entry
+        (
+            R"((^|\n)\s*(scale|convertToMeters)\s+([-+0-9.eE]+)\s*;)"
+        );
+        if (std::regex_search(s, match, entry))
+        {
+            scale = std::stod(match[3]);
+        }
+    }
+
+    const scalar meshValues[] =
+    {
+        grid.xMax() - grid.xMin(), grid.yMax() - grid.yMin(), grid.depth(),
+        scalar(grid.nx()), scalar(grid.ny())
+    };
+    OStringStream differences;
+    forAll(bedGeometryEntries(), k)
+    {
+        const word& key = bedGeometryEntries()[k];
+        scalar value;
+        if (!plainNumber(bed, key, value)) continue;
+        if (k < 3) value *= scale;
+        // The mesh points may be written with 6 digits (OpenFOAM's default
+        // writePrecision): agreement to 1e-5 is a match
+        if (mag(value - meshValues[k]) > 1e-5*mag(meshValues[k]))
+        {
+            differences
+                << (differences.str().empty() ? "" : ", ") << key << ' '
+                << value << " there, " << meshValues[k] << " in the mesh";
+        }
+    }
+    if (!differences.str().empty())
+    {
+        FatalIOErrorInFunction(bed)
+            << "system/bedGeometry does not match the mesh (constant/polyMesh): "
+            << differences.str().c_str() << ". Run blockMesh after editing"
+            << " system/bedGeometry (blockMeshDict makes the mesh from it)"
+            << exit(FatalIOError);
+    }
+}
+
+
+Foam::label Foam::caseChecks::availableCores()
+{
+    cpu_set_t set;
+    if (sched_getaffinity(0, sizeof(set), &set) == 0)
+    {
+        return CPU_COUNT(&set);
+    }
+    return max(label(std::thread::hardware_concurrency()), 1);
+}
+
+
+void Foam::caseChecks::threadCount
+(
+    const dictionary& dict,
+    const string& where,
+    const label nThreads
+)
+{
+    const label cores = availableCores();
+    if (nThreads > cores)
+    {
+        IOWarningInFunction(dict)
+            << "nThreads " << nThreads << " in " << where.c_str()
+            << " is above the " << cores << " cores this run may use: the"
+            << " threads would take turns on them, which makes a run many"
+            << " times slower; use nThreads " << cores << " or fewer" << endl;
+    }
+}
+
+
+void Foam::caseChecks::serialRun(const word& application)
+{
+    const label nProcs = Pstream::parRun() ? Pstream::nProcs() : launchedProcesses();
+    if (nProcs > 1)
+    {
+        FatalErrorInFunction
+            << application << " was started as " << nProcs << " processes"
+            << (Pstream::parRun() ? " (-parallel)" : " (mpirun)") << ", but it"
+            << " runs in one process: the particles are shared among threads"
+            << " (nThreads in constant/particleProperties), not among MPI"
+            << " processes. Run it as '" << application << "' alone, without"
+            << " mpirun and -parallel (decomposePar is not needed)"
+            << exit(FatalError);
+    }
+}
+
+
+// ************************************************************************* //
