@@ -27,6 +27,7 @@ Usage
 #include "fluidization.H"
 #include "dpmCloud.H"
 #include "solverTimers.H"
+#include "incompleteTimes.H"
 #include "fixedValueFvPatchFields.H"
 
 #define PIMPLE_CONTROL
@@ -51,6 +52,7 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+    #include "setAsideIncompleteTimes.H"
     #include "createTime.H"
     Sout.precision(8);      // a readable log; fields keep writePrecision
     #include "createMesh.H"
@@ -114,6 +116,10 @@ int main(int argc, char *argv[])
             particles.reportBalance(Info);
         }
         runTime.write();
+        if (runTime.writeTime())
+        {
+            particles.write();      // last: a time with it is complete
+        }
         timers.stop(solverTimers::output);
 
         runTime.printExecutionTime(Info);

@@ -6,9 +6,11 @@
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
 #include "mathematicalConstants.H"
+#include "faultInjection.H"
 
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -324,7 +326,7 @@ Foam::dpmCloud::dpmCloud
             mesh.time().timeName(),
             mesh,
             IOobject::NO_READ,
-            mode == startMode::run ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+            IOobject::NO_WRITE      // the solver writes the state last
         )
     ),
     mesh_(mesh),
@@ -418,6 +420,10 @@ Foam::dpmCloud::dpmCloud
 
     subSteps();         // the DEM step must divide the CFD step
     initialise(mode);
+    if (mode == startMode::run)
+    {
+        faultInjection::watchFieldWrite(mesh);
+    }
 
     writer_.reset
     (
@@ -812,5 +818,20 @@ bool Foam::dpmCloud::writeObject
 void Foam::dpmCloud::save(const fileName& file) const
 {
     mkDir(file.path());
+    const faultInjection::action fault = faultInjection::due("stateWrite");
+    if (fault == faultInjection::action::stop)
+    {
+        faultInjection::stop();
+    }
+    else if (fault == faultInjection::action::kill)
+    {
+        // Test only: leave what a kill in the middle of the DEM's write
+        // leaves, half its temporary file and no state
+        const fileName whole = file + ".fault";
+        dem_->save(whole);
+        ::truncate(whole.c_str(), ::off_t(fileSize(whole)/2));
+        Foam::mv(whole, file + ".tmp");
+        faultInjection::kill();
+    }
     guarded("Cannot write the particle state", [&]{ dem_->save(file); });
 }
