@@ -28,6 +28,7 @@ Usage
 #include "dpmCloud.H"
 #include "solverTimers.H"
 #include "incompleteTimes.H"
+#include "writeFailureReason.H"
 #include "fixedValueFvPatchFields.H"
 
 #define PIMPLE_CONTROL
@@ -115,11 +116,7 @@ int main(int argc, char *argv[])
         {
             particles.reportBalance(Info);
         }
-        runTime.write();
-        if (runTime.writeTime())
-        {
-            particles.write();      // last: a time with it is complete
-        }
+        #include "writeTime.H"
         timers.stop(solverTimers::output);
 
         runTime.printExecutionTime(Info);

@@ -833,5 +833,15 @@ void Foam::dpmCloud::save(const fileName& file) const
         Foam::mv(whole, file + ".tmp");
         faultInjection::kill();
     }
-    guarded("Cannot write the particle state", [&]{ dem_->save(file); });
+    try
+    {
+        dem_->save(file);
+    }
+    catch (const dem::Error& err)
+    {
+        // A write error (full disk, no permission), not a setting
+        FatalErrorInFunction
+            << "Cannot write the particle state " << file << ": "
+            << err.what() << exit(FatalError);
+    }
 }

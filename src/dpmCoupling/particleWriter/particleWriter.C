@@ -270,12 +270,13 @@ void Foam::particleWriter::writeIndex(const dem::Simulation& particles) const
                 os  << "   </Attribute>\n";
             };
 
+        // The time as its name: a restarted run lists the same values
         for (const Tuple2<scalar, word>& t : times_)
         {
             const word& h5 = t.second();
             os  << "  <Grid Name=\"particles_" << h5
                 << "\" GridType=\"Uniform\">\n"
-                << "   <Time Value=\"" << t.first() << "\"/>\n"
+                << "   <Time Value=\"" << h5 << "\"/>\n"
                 << "   <Topology TopologyType=\"Polyvertex\" NumberOfElements=\""
                 << n << "\"/>\n"
                 << "   <Geometry GeometryType=\"XYZ\">\n";
