@@ -52,6 +52,19 @@ def time_name(t):
     return "%.6g" % float(t)
 
 
+def check_case(case):
+    """Raise FileNotFoundError naming the path unless case is a dpmFoam2D
+    case directory (system/controlDict, particles/ or postProcessing/): a
+    mistyped path must not pass, nor be created by the output."""
+    if not os.path.isdir(case):
+        raise FileNotFoundError("no case directory %s" % case)
+    if not any(os.path.exists(os.path.join(case, p))
+               for p in (os.path.join("system", "controlDict"), PARTICLES_DIR,
+                         "postProcessing")):
+        raise FileNotFoundError("%s is not a dpmFoam2D case (no system/controlDict, "
+                                "particles/ or postProcessing/)" % case)
+
+
 def particles_dir(case):
     return os.path.join(case, PARTICLES_DIR)
 
