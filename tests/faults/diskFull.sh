@@ -43,7 +43,7 @@ waitStopped()
 fullDiskAt()
 {
     local fault=$1 name=${1%%:*} case=$disk/${1%%:*} pid= status file
-    trap '[ -n "$pid" ] && kill -9 $pid 2>/dev/null' EXIT
+    trap '[ -n "${pid:-}" ] && kill -9 $pid 2>/dev/null' EXIT
     cp -r template "$case"
     (cd "$case" && DPMFOAM2D_FAULT=$fault:stop exec dpmFoam2D) >log.$name 2>&1 &
     pid=$!
@@ -90,7 +90,7 @@ done
 readOnlyAt()
 {
     local name=readOnly case=$disk/readOnly pid= status
-    trap '[ -n "$pid" ] && kill -9 $pid 2>/dev/null; mount -o remount,rw "$disk"' EXIT
+    trap '[ -n "${pid:-}" ] && kill -9 $pid 2>/dev/null; mount -o remount,rw "$disk"' EXIT
     cp -r template "$case"
     (cd "$case" && DPMFOAM2D_FAULT=fieldWrite:2:stop exec dpmFoam2D) >log.$name 2>&1 &
     pid=$!

@@ -58,17 +58,17 @@ void writeWhole
     if (fault == faultInjection::action::stop) faultInjection::stop();
 
     const fileName partial = file + ".partial";
-    const auto failed = [&](const fileName& f)
+    const auto failed = [&]()
     {
         const int err = errno;
         ::unlink(partial.c_str());      // leave no part behind, free the space
         FatalErrorInFunction
-            << "Cannot write " << f << ": " << std::strerror(err)
+            << "Cannot write " << file << ": " << std::strerror(err)
             << exit(FatalError);
     };
 
     const int fd = ::open(partial.c_str(), O_WRONLY|O_CREAT|O_TRUNC, 0666);
-    if (fd < 0) failed(partial);
+    if (fd < 0) failed();
     if (fault == faultInjection::action::kill)
     {
         // Die with half the file written
@@ -84,12 +84,12 @@ void writeWhole
             const int err = errno;
             ::close(fd);
             errno = err;
-            failed(partial);
+            failed();
         }
         done += size_t(w);
     }
-    if (::close(fd) != 0) failed(partial);
-    if (std::rename(partial.c_str(), file.c_str()) != 0) failed(file);
+    if (::close(fd) != 0) failed();
+    if (std::rename(partial.c_str(), file.c_str()) != 0) failed();
 }
 
 } // End anonymous namespace
