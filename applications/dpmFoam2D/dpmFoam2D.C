@@ -28,6 +28,8 @@ Usage
 #include "dpmCloud.H"
 #include "solverTimers.H"
 #include "caseChecks.H"
+#include "incompleteTimes.H"
+#include "writeFailureReason.H"
 #include "fixedValueFvPatchFields.H"
 
 #define PIMPLE_CONTROL
@@ -53,6 +55,7 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     caseChecks::serialRun(args.executable());    // threads, not MPI
+    #include "setAsideIncompleteTimes.H"
     #include "createTime.H"
     Sout.precision(8);      // a readable log; fields keep writePrecision
     #include "createMesh.H"
@@ -115,7 +118,7 @@ int main(int argc, char *argv[])
         {
             particles.reportBalance(Info);
         }
-        runTime.write();
+        #include "writeTime.H"
         timers.stop(solverTimers::output);
 
         runTime.printExecutionTime(Info);

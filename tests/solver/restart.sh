@@ -42,8 +42,24 @@ PY
 cmp -s once/0.02/uniform/dem.state twice/0.02/uniform/dem.state || fail "DEM states differ"
 
 # A time directory without its particle state (a run killed while writing
-# it) must stop the restart with a message, not start a new bed there
+# it) is set aside as <time>.incomplete, said in the log, and the run
+# continues from the last complete time, again bit for bit
 rm twice/0.02/uniform/dem.state
-(cd twice && dpmFoam2D >log.incomplete 2>&1) && fail "restarted from an incomplete time"
-grep -q "The time directory is incomplete" twice/log.incomplete || fail "no message for an incomplete time"
-pass "restart continues bit for bit; an incomplete time is refused"
+(cd twice && dpmFoam2D >log.incomplete 2>&1) || { tail -20 twice/log.incomplete; fail "no restart after an incomplete time"; }
+grep -q "Restart: time 0.02 is incomplete .*set aside as 0.02.incomplete" twice/log.incomplete \
+    || fail "no message for the incomplete time set aside"
+[ -d twice/0.02.incomplete ] || fail "0.02 not set aside as 0.02.incomplete"
+grep -q "read from .*0.01/uniform/dem.state" twice/log.incomplete || fail "did not restart from 0.01"
+for f in U p_rgh uniform/dem.state
+do
+    cmp -s once/0.02/$f twice/0.02/$f || fail "0.02/$f differs after the restart from the incomplete time"
+done
+
+# startFrom startTime naming an incomplete time: refused, the time named
+rm twice/0.02/uniform/dem.state
+setEntry twice/system/controlDict startFrom startTime
+setEntry twice/system/controlDict startTime 0.02
+(cd twice && dpmFoam2D >log.startTime 2>&1) && fail "started from an incomplete startTime"
+grep -qE "Start time 0.02 \(startTime in .*controlDict\"?\) is incomplete" twice/log.startTime \
+    || { tail -20 twice/log.startTime; fail "no message naming the incomplete start time"; }
+pass "restart continues bit for bit; an incomplete latest time is set aside, an incomplete startTime refused"

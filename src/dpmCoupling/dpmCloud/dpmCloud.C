@@ -7,9 +7,11 @@
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
 #include "mathematicalConstants.H"
+#include "faultInjection.H"
 
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -180,7 +182,7 @@ Foam::dpmCloud::dpmCloud
             mesh.time().timeName(),
             mesh,
             IOobject::NO_READ,
-            mode == startMode::run ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
+            IOobject::NO_WRITE      // the solver writes the state last
         )
     ),
     mesh_(mesh),
@@ -279,6 +281,10 @@ Foam::dpmCloud::dpmCloud
 
     subSteps();         // the DEM step must divide the CFD step
     initialise(mode);
+    if (mode == startMode::run)
+    {
+        faultInjection::watchFieldWrite(mesh);
+    }
 
     writer_.reset
     (

@@ -191,11 +191,22 @@ void Foam::dpmCloud::initialise(const startMode mode)
             << " the case has not been run. Run dpmFoam2D first"
             << exit(FatalError);
     }
-    if
-    (
-        mode == startMode::postProcess
-     || (mode == startMode::run && mesh_.time().value() > 0)
-    )
+    if (mode == startMode::postProcess)
+    {
+        // -postProcess reads the particles of the times a run saved
+        FatalErrorInFunction
+            << "No particle state " << restart << " for time "
+            << mesh_.time().timeName() << ": -postProcess works on the times"
+            << " a run has written" << nl << "    "
+            << (
+                   mesh_.time().value() > 0
+                 ? "The time is incomplete (a run killed while writing it?):"
+                   " leave it out (-time) or remove it"
+                 : "Run dpmFoam2D first (or leave time 0 out with -time)"
+               )
+            << exit(FatalError);
+    }
+    if (mode == startMode::run && mesh_.time().value() > 0)
     {
         // A restart without particles (a new bed starts at time 0): the
         // run was killed while it wrote this time, or the state was removed

@@ -1,11 +1,16 @@
 #include "particleWriter.H"
 #include "OSspecific.H"
 #include "IOstreams.H"
-#include "OFstream.H"
+#include "OStringStream.H"
+#include "faultInjection.H"
 #include "dem/Facade.hpp"
 
 #include <hdf5.h>
+#include <fcntl.h>
+#include <unistd.h>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <algorithm>
 #include <vector>
 
@@ -14,9 +19,9 @@
 namespace
 {
 
-//- Write one dataset of shape [n] or [n, width]
+//- Write one dataset of shape [n] or [n, width] (in memory: no disk error)
 template<class T>
-void writeDataset
+bool writeDataset
 (
     hid_t file, const char* name, hid_t type,
     const std::vector<T>& data, const hsize_t n, const hsize_t width
@@ -28,9 +33,63 @@ void writeDataset
     (
         file, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT
     );
-    if (n > 0) H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
-    H5Dclose(set);
-    H5Sclose(space);
+    const bool ok =
+        space >= 0 && set >= 0
+     && (n == 0 || H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) >= 0);
+    if (set >= 0) H5Dclose(set);
+    if (space >= 0) H5Sclose(space);
+    return ok;
+}
+
+
+//- Write bytes to file as a whole: to file.partial, then renamed, so a
+//  kill or a full disk never leaves a part of it under its name. A write
+//  error stops the run naming the file and the system's reason.
+void writeWhole
+(
+    const Foam::fileName& file,
+    const char* data,
+    const size_t size,
+    const char* faultPoint
+)
+{
+    using namespace Foam;
+    const faultInjection::action fault = faultInjection::due(faultPoint);
+    if (fault == faultInjection::action::stop) faultInjection::stop();
+
+    const fileName partial = file + ".partial";
+    const auto failed = [&]()
+    {
+        const int err = errno;
+        ::unlink(partial.c_str());      // leave no part behind, free the space
+        FatalErrorInFunction
+            << "Cannot write " << file << ": " << std::strerror(err)
+            << exit(FatalError);
+    };
+
+    const int fd = ::open(partial.c_str(), O_WRONLY|O_CREAT|O_TRUNC, 0666);
+    if (fd < 0) failed();
+    if (fault == faultInjection::action::kill)
+    {
+        // Die with half the file written
+        if (::write(fd, data, size/2) >= 0) faultInjection::kill();
+    }
+    size_t done = 0;
+    while (done < size)
+    {
+        const ssize_t w = ::write(fd, data + done, size - done);
+        if (w < 0)
+        {
+            if (errno == EINTR) continue;
+            const int err = errno;
+            ::close(fd);
+            errno = err;
+            failed();
+        }
+        done += size_t(w);
+    }
+    if (::close(fd) != 0) failed();
+    if (std::rename(partial.c_str(), file.c_str()) != 0) failed();
 }
 
 } // End anonymous namespace
@@ -100,33 +159,39 @@ void Foam::particleWriter::write
         id[i] = int(particles.id()[i]);
     }
 
+    // The file is made in memory (HDF5's core driver) and written as a
+    // whole: a disk error is then one plain write error, named with its
+    // file, and leaves HDF5 with no half-closed file at exit
     const fileName final = file(timeName);
-    const fileName partial = final + ".partial";
+    const hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+    H5Pset_fapl_core(fapl, 1 << 20, false);
     const hid_t h5 =
-        H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+        H5Fcreate(final.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+    H5Pclose(fapl);
     if (h5 < 0)
     {
         FatalErrorInFunction
-            << "Cannot create " << partial << exit(FatalError);
+            << "Cannot make the HDF5 image of " << final << exit(FatalError);
     }
 
+    bool ok = true;
     const hid_t scalarSpace = H5Screate(H5S_SCALAR);
     const hid_t attr = H5Acreate2
     (
         h5, "time", H5T_NATIVE_DOUBLE, scalarSpace, H5P_DEFAULT, H5P_DEFAULT
     );
     const double time = t;
-    H5Awrite(attr, H5T_NATIVE_DOUBLE, &time);
-    H5Aclose(attr);
+    ok = ok && attr >= 0 && H5Awrite(attr, H5T_NATIVE_DOUBLE, &time) >= 0;
+    if (attr >= 0) H5Aclose(attr);
     H5Sclose(scalarSpace);
 
-    writeDataset(h5, "position", H5T_NATIVE_FLOAT, position, n, 3);
-    writeDataset(h5, "velocity", H5T_NATIVE_FLOAT, velocity, n, 3);
-    writeDataset(h5, "omega", H5T_NATIVE_FLOAT, omega, n, 1);
-    writeDataset(h5, "diameter", H5T_NATIVE_FLOAT, diameter, n, 1);
-    writeDataset(h5, "class", H5T_NATIVE_SCHAR, classIndex, n, 1);
-    writeDataset(h5, "id", H5T_NATIVE_INT, id, n, 1);
-    if (voidage.size() == label(n) && gasVelocity.size() == label(n))
+    ok = ok && writeDataset(h5, "position", H5T_NATIVE_FLOAT, position, n, 3);
+    ok = ok && writeDataset(h5, "velocity", H5T_NATIVE_FLOAT, velocity, n, 3);
+    ok = ok && writeDataset(h5, "omega", H5T_NATIVE_FLOAT, omega, n, 1);
+    ok = ok && writeDataset(h5, "diameter", H5T_NATIVE_FLOAT, diameter, n, 1);
+    ok = ok && writeDataset(h5, "class", H5T_NATIVE_SCHAR, classIndex, n, 1);
+    ok = ok && writeDataset(h5, "id", H5T_NATIVE_INT, id, n, 1);
+    if (ok && voidage.size() == label(n) && gasVelocity.size() == label(n))
     {
         std::vector<float> eps(n), u(3*n);
         for (hsize_t i = 0; i < n; ++i)
@@ -134,15 +199,34 @@ void Foam::particleWriter::write
             eps[i] = float(voidage[i]);
             for (int k = 0; k < 3; ++k) u[3*i + k] = float(gasVelocity[i][k]);
         }
-        writeDataset(h5, "voidage", H5T_NATIVE_FLOAT, eps, n, 1);
-        writeDataset(h5, "gasVelocity", H5T_NATIVE_FLOAT, u, n, 3);
+        ok = ok && writeDataset(h5, "voidage", H5T_NATIVE_FLOAT, eps, n, 1);
+        ok = ok && writeDataset(h5, "gasVelocity", H5T_NATIVE_FLOAT, u, n, 3);
     }
 
-    if (H5Fclose(h5) < 0 || std::rename(partial.c_str(), final.c_str()) != 0)
+    std::vector<char> image;
+    if (ok && H5Fflush(h5, H5F_SCOPE_GLOBAL) >= 0)
+    {
+        const ssize_t size = H5Fget_file_image(h5, nullptr, 0);
+        if (size > 0)
+        {
+            image.resize(size);
+            ok = H5Fget_file_image(h5, image.data(), size) == size;
+        }
+        else
+        {
+            ok = false;
+        }
+    }
+    else
+    {
+        ok = false;
+    }
+    if (H5Fclose(h5) < 0 || !ok)
     {
         FatalErrorInFunction
-            << "Cannot write " << final << exit(FatalError);
+            << "Cannot make the HDF5 image of " << final << exit(FatalError);
     }
+    writeWhole(final, image.data(), image.size(), "particleWrite");
 
     // Replace a later entry of an earlier run; keep the list in time order
     while (times_.size() && times_.last().first() >= t*(1 - 1e-12) - 1e-12)
@@ -157,10 +241,8 @@ void Foam::particleWriter::write
 void Foam::particleWriter::writeIndex(const dem::Simulation& particles) const
 {
     const label n = particles.size();
-    const fileName final = dir_/"particles.xdmf";
-    const fileName partial = final + ".partial";
+    OStringStream os;
     {
-        OFstream os(partial);
         os  << "<?xml version=\"1.0\" ?>\n"
             << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
             << "<Xdmf Version=\"2.0\">\n<Domain>\n"
@@ -188,12 +270,13 @@ void Foam::particleWriter::writeIndex(const dem::Simulation& particles) const
                 os  << "   </Attribute>\n";
             };
 
+        // The time as its name: a restarted run lists the same values
         for (const Tuple2<scalar, word>& t : times_)
         {
             const word& h5 = t.second();
             os  << "  <Grid Name=\"particles_" << h5
                 << "\" GridType=\"Uniform\">\n"
-                << "   <Time Value=\"" << t.first() << "\"/>\n"
+                << "   <Time Value=\"" << h5 << "\"/>\n"
                 << "   <Topology TopologyType=\"Polyvertex\" NumberOfElements=\""
                 << n << "\"/>\n"
                 << "   <Geometry GeometryType=\"XYZ\">\n";
@@ -208,8 +291,6 @@ void Foam::particleWriter::writeIndex(const dem::Simulation& particles) const
         }
         os  << "</Grid>\n</Domain>\n</Xdmf>\n";
     }
-    if (!Foam::mv(partial, final))
-    {
-        FatalErrorInFunction << "Cannot write " << final << exit(FatalError);
-    }
+    const std::string text = os.str();
+    writeWhole(dir_/"particles.xdmf", text.data(), text.size(), "xdmfWrite");
 }

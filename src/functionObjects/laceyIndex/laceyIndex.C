@@ -141,8 +141,17 @@ void Foam::functionObjects::laceyIndex::createFiles()
       + Foam::name(r.xMax) + " " + Foam::name(r.yMax) + ")"
     );
 
+    // A table of -postProcess says so: readers keep it apart from the run's
+    // (bin/dpmParticleIO.py read_postprocessing)
+    const char* recomputed =
+        "recomputed after the run (dpmFoam2D -postProcess) at the saved times";
+
     OFstream& lacey = laceyFile_();
     writeHeader(lacey, "Lacey mixing index (Norouzi et al. 2012, eqs 8-11)");
+    if (functionObject::postProcess)
+    {
+        writeHeaderValue(lacey, "postProcess", recomputed);
+    }
     writeHeaderValue(lacey, "cloud", cloudName_.c_str());
     writeHeaderValue
     (
@@ -176,6 +185,10 @@ void Foam::functionObjects::laceyIndex::createFiles()
         " vertical = (hSmall - hLarge)/hAll,"
         " horizontal = (rSmall - rLarge)/rAll"
     );
+    if (functionObject::postProcess)
+    {
+        writeHeaderValue(seg, "postProcess", recomputed);
+    }
     writeHeaderValue(seg, "cloud", cloudName_.c_str());
     writeHeaderValue(seg, "region [m]", region.c_str());
     writeCommented(seg, "Time");

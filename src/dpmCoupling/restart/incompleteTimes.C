@@ -1,0 +1,94 @@
+#include "incompleteTimes.H"
+#include "argList.H"
+#include "Time.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+bool Foam::completeTime(const fileName& timeDir)
+{
+    return
+        isFile(timeDir/"U")
+     && isFile(timeDir/"p_rgh")
+     && isFile(timeDir/"uniform"/"dem.state");
+}
+
+
+Foam::label Foam::setAsideIncompleteTimes(const argList& args)
+{
+    const fileName casePath = args.path();
+    const fileName controlDictFile = casePath/"system"/"controlDict";
+    if (!isFile(controlDictFile))
+    {
+        return 0;       // Time reports the missing file
+    }
+    IFstream is(controlDictFile);
+    const dictionary controlDict(is);
+    const word startFrom =
+        controlDict.lookupOrDefault<word>("startFrom", "latestTime");
+
+    const instantList times = Time::findTimes(casePath);
+
+    if (startFrom == "startTime")
+    {
+        const scalar t0 = controlDict.lookupOrDefault<scalar>("startTime", 0);
+        for (const instant& t : times)
+        {
+            if
+            (
+                t.value() > 0 && mag(t.value() - t0) <= 1e-12*max(1, mag(t0))
+             && !completeTime(casePath/t.name())
+            )
+            {
+                FatalErrorInFunction
+                    << "Start time " << t.name() << " (startTime in "
+                    << controlDictFile << ") is incomplete: "
+                    << casePath/t.name() << " has no complete restart state"
+                    << " (U, p_rgh, uniform/dem.state; a run killed while"
+                    << " writing it?)" << nl
+                    << "    Remove " << casePath/t.name() << " or start from"
+                    << " an earlier time (startFrom latestTime continues"
+                    << " from the last complete one)" << exit(FatalError);
+            }
+        }
+        return 0;
+    }
+    if (startFrom != "latestTime")
+    {
+        return 0;
+    }
+
+    label nSetAside = 0;
+    for (label i = times.size() - 1; i >= 0; --i)
+    {
+        const instant& t = times[i];
+        const fileName dir = casePath/t.name();
+        if (t.value() <= 0 || completeTime(dir))
+        {
+            break;
+        }
+        fileName aside = dir + ".incomplete";
+        for (label k = 2; exists(aside); ++k)
+        {
+            aside = dir + ".incomplete." + Foam::name(k);
+        }
+        if (!Foam::mv(dir, aside))
+        {
+            FatalErrorInFunction
+                << "Time " << t.name() << " in " << casePath << " is"
+                << " incomplete (no complete restart state) and cannot be"
+                << " renamed to " << aside << nl
+                << "    Remove " << dir << " and run again"
+                << exit(FatalError);
+        }
+        Info<< "Restart: time " << t.name() << " is incomplete (no complete"
+            << " restart state: a run killed while writing it); set aside as "
+            << aside.name() << endl;
+        ++nSetAside;
+    }
+    return nSetAside;
+}
+
+
+// ************************************************************************* //
