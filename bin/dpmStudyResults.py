@@ -365,7 +365,11 @@ def results(study_dir, X, rate_window=None, pictures=True):
     cases = find_cases(study_dir)
     rows, windows, dirs = [], [], {}
     for c in cases:
-        row, win = case_row(c, X, rate_window)
+        try:
+            row, win = case_row(c, X, rate_window)
+        except ValueError as e:         # tables that do not join
+            say("results: %s left out: %s" % (c["case"], e))
+            continue
         if row is not None:
             rows.append(row)
             windows.extend(win)
