@@ -10,15 +10,18 @@
 # The same run checks, at every write, that the gas carries exactly the
 # force the particles feel and that the particles' area is mapped to cells
 # in full (round-off: relative 1e-10).
-#   fluidizedPressureDrop.sh <workDir> <pressure in bar>
+# Every drag model must pass it (the weight does not depend on the drag).
+#   fluidizedPressureDrop.sh <workDir> <pressure in bar> [dragModel]
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 bar="${2:?pressure in bar}"
+model="${3:-ErgunWenYu}"
 
 makeCase "$workDir/case"
 cd "$workDir/case" || fail "cd"
 
 setEntry constant/gasProperties operatingPressure "$bar"
+setEntry constant/particleProperties dragModel "$model"
 setEntry constant/gasProperties U0byUmf 2
 setEntry constant/particleProperties classes.small.count 1200
 setEntry constant/particleProperties classes.large.count 260
@@ -41,8 +44,9 @@ functions
 }
 EOF2
 runSolver
+grep -q "drag model $model" log.dpmFoam2D || fail "the log does not name the drag model $model"
 
-py - "$bar" <<'PY' || fail "fluidized bed pressure drop at $bar bar"
+py - "$bar" "$model" <<'PY' || fail "fluidized bed pressure drop at $bar bar ($model)"
 import sys, glob, re
 import numpy as np
 bar = float(sys.argv[1])
@@ -55,7 +59,7 @@ data = np.loadtxt(glob.glob("postProcessing/inletPressure/*/surfaceFieldValue.da
 t, p = data[:, 0], data[:, 1]
 mean = p[t >= 0.5].mean()
 err = abs(mean - expected) / expected
-print(f"{bar:g} bar: mean inlet p_rgh over 0.5-2 s {mean:.1f} Pa, (W - B)/A {expected:.1f} Pa, error {100*err:.2f} %")
+print(f"{sys.argv[2]}, {bar:g} bar: mean inlet p_rgh over 0.5-2 s {mean:.1f} Pa, (W - B)/A {expected:.1f} Pa, error {100*err:.2f} %")
 
 # Exchange balance at each write
 log = open("log.dpmFoam2D").read()
@@ -71,4 +75,4 @@ print(f"exchange balance: {len(forces)} writes, worst relative mismatch {worst:.
 ok = err < 0.05 and len(forces) >= 4 and worst < 1e-10
 sys.exit(0 if ok else 1)
 PY
-pass "pressure drop of the fluidized bed at $bar bar"
+pass "pressure drop of the fluidized bed at $bar bar ($model)"

@@ -3,8 +3,10 @@
 # time, and N more (N = 1000 DEM steps: the particles are renumbered by cell
 # every 200, at the restart step too). The particles (positions, velocities, spins) and the gas
 # fields must be identical bit for bit (gas written in binary).
+#   restart.sh <workDir> [dragModel]
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
+model="${2:-ErgunWenYu}"     # drag model (Beetstra: the cell mixture too)
 
 makeCase "$workDir/once"
 cd "$workDir/once" || fail "cd"
@@ -13,6 +15,7 @@ setEntry system/controlDict writePrecision 17
 setEntry system/controlDict endTime 0.02
 setEntry system/controlDict writeInterval 0.01
 setEntry constant/gasProperties U0byUmf 2
+setEntry constant/particleProperties dragModel "$model"
 cd .. && cp -r once twice || fail "copy"
 
 (cd once && runSolver)

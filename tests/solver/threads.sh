@@ -3,8 +3,10 @@
 # on 1 and on 2 threads give the same particles and gas, bit for bit: the
 # DEM and the coupling loops sum in an order that does not depend on the
 # thread count. Correct on a busy machine too (only slower).
+#   threads.sh <workDir> [dragModel]
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
+model="${2:-ErgunWenYu}"     # drag model (Beetstra: the cell mixture too)
 # Waiting threads sleep instead of spinning: on a busy machine a spinning
 # thread holds the core its descheduled partner needs, and 2 threads then
 # run tens of times slower (the results do not depend on it)
@@ -17,6 +19,7 @@ setEntry system/controlDict endTime 0.02
 setEntry system/controlDict writeInterval 0.02
 setEntry constant/gasProperties U0byUmf 2
 setEntry constant/particleProperties nThreads 1
+setEntry constant/particleProperties dragModel "$model"
 cd .. && cp -r one two || fail "copy"
 (cd two && setEntry constant/particleProperties nThreads 2)
 

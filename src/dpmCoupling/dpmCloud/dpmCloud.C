@@ -3,6 +3,7 @@
 #include "fluidization.H"
 #include "positiveEntry.H"
 #include "caseChecks.H"
+#include "solidsMixture.H"
 #include "emptyFvPatch.H"
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
@@ -238,6 +239,7 @@ Foam::dpmCloud::dpmCloud
         dimensionedScalar("zero", dimless, 0.0),
         zeroGradientFvPatchScalarField::typeName
     ),
+    mixtureNeeded_(drag_->needsMixture()),
     Kc_
     (
         fieldIO("Kc", mesh, false),
@@ -444,8 +446,13 @@ void Foam::dpmCloud::interpolateGas(const volVectorField& U)
         slip[i] = std::sqrt(sx*sx + sy*sy);     // not hypot: 5x dearer, no gain here
     }
 
+    if (mixtureNeeded_)
+    {
+        interpolateMixture();
+    }
+
     K_.setSize(n);
-    drag_->dragCoefficient(epsP, dP, slip, K_);
+    drag_->dragCoefficient(epsP, dP, slip, mixtureP_, K_);
 
     // Drag, and the buoyancy of the hydrostatic gas pressure
     double* Kd = dem_->dragCoefficient();
@@ -598,6 +605,65 @@ void Foam::dpmCloud::updateVoidage()
     porosity2D_.correctBoundaryConditions();
     particleFraction_.correctBoundaryConditions();
     voidage_.correctBoundaryConditions();
+
+    if (mixtureNeeded_)
+    {
+        updateMixture();
+    }
+}
+
+
+void Foam::dpmCloud::updateMixture()
+{
+    const label n = size();
+    const label nCells = mesh_.nCells();
+    const scalar Vc = grid_.cellVolume();
+    const double* d = dem_->diameter();
+    const int* cls = dem_->classIndex();
+
+    classFraction_.setSize(classNames_.size());
+    forAll(classFraction_, k)
+    {
+        classFraction_[k].setSize(nCells);
+        classFraction_[k] = 0;
+    }
+    fractionByDiameter_.setSize(nCells);
+    fractionByDiameter_ = 0;
+
+    // The same shares as particleFraction_ in updateVoidage
+    for (label i = 0; i < n; ++i)
+    {
+        solidsMixture::addParticle
+        (
+            d[i], cls[i], overlapCount_[i],
+            &overlapCells_[4*i], &overlapFraction_[4*i], Vc,
+            classFraction_, fractionByDiameter_
+        );
+    }
+}
+
+
+void Foam::dpmCloud::interpolateMixture()
+{
+    const label n = size();
+    const double* x = dem_->x();
+    const double* y = dem_->y();
+    const double* d = dem_->diameter();
+    const scalarField& phiP = particleFraction_.primitiveField();
+
+    scalarField& dMean = mixtureP_.sauterDiameter;
+    dMean.setSize(n);
+    #pragma omp parallel for num_threads(dem_->settings().nThreads) schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        label cells[4];
+        scalar w[4];
+        grid_.interpolationStencil(x[i], y[i], cells, w);
+        dMean[i] = solidsMixture::sauterDiameter
+        (
+            cells, w, phiP, fractionByDiameter_, d[i]
+        );
+    }
 }
 
 
@@ -659,6 +725,8 @@ void Foam::dpmCloud::report(Ostream& os) const
             << s.classes[k].density << " kg/m3, mass fraction " << w[k] << nl;
     }
     os  << "    total mass " << totalMass() << " kg" << nl
+        << "    drag model " << drag_->type()
+        << (mixtureNeeded_ ? " (with the mixture of each cell)" : "") << nl
         << "    bed depth (mesh thickness) " << grid_.depth()*1e3 << " mm, gas cells "
         << grid_.dx()*1e3 << " x " << grid_.dy()*1e3 << " mm ("
         << grid_.nx() << " x " << grid_.ny() << ")" << nl

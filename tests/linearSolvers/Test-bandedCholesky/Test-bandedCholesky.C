@@ -182,7 +182,13 @@ int main(int argc, char *argv[])
     }
 
     Info<< nl << nPassed << " passed, " << nFailed << " failed" << endl;
-    return nFailed ? 1 : 0;
+    if (nFailed)
+    {
+        // Not a return value: argList's destructor ends the run with 0
+        FatalErrorInFunction
+            << nFailed << " checks failed" << exit(FatalError);
+    }
+    return 0;
 }
 
 

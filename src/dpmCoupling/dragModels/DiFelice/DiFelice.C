@@ -35,6 +35,7 @@ void Foam::dragModels::DiFelice::dragCoefficient
     const scalarField& voidage,
     const scalarField& diameter,
     const scalarField& slip,
+    const particleMixture&,
     scalarField& K
 ) const
 {

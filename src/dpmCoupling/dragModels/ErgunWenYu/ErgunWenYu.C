@@ -40,6 +40,7 @@ void Foam::dragModels::ErgunWenYu::dragCoefficient
     const scalarField& voidage,
     const scalarField& diameter,
     const scalarField& slip,
+    const particleMixture&,
     scalarField& K
 ) const
 {
