@@ -139,10 +139,12 @@ Foam::scalar Foam::dpmCloud::terminalVelocity
     if (!(weight > 0)) return 0;
 
     const scalarField voidage(1, 1.0), diameter(1, d);
+    particleMixture alone;          // its own diameter is the mixture's
+    alone.sauterDiameter = diameter;
     auto drag = [&](const scalar slip)
     {
         scalarField K(1);
-        drag_->dragCoefficient(voidage, diameter, scalarField(1, slip), K);
+        drag_->dragCoefficient(voidage, diameter, scalarField(1, slip), alone, K);
         return K[0]*slip;
     };
     scalar lower = 0, upper = 1;

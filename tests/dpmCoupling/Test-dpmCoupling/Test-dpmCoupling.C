@@ -202,6 +202,8 @@ int main(int argc, char *argv[])
         Info<< "    message: " << m.c_str() << endl;
         check("a misspelling names the nearest entry", m.find("unknown entry 'restitutoin' in contact; did you mean 'restitution'?") != string::npos, 1, 0);
         check("a pattern matching no entry is unknown", message("\"kx.*\" 1;").empty(), 0, 0);
+    }
+
     // The closures for mixtures. Hand values: the published formulas worked
     // with Python's math module (not this code) for rho = 1.204 kg/m3,
     // mu = 1.75e-5 Pa s, d = 1.5 mm; K = beta V_p/(1 - eps), beta the
