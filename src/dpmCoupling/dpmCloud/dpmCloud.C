@@ -6,6 +6,7 @@
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
 #include "mathematicalConstants.H"
+#include "fvcGrad.H"
 
 #include <fstream>
 #include <sstream>
@@ -344,6 +345,7 @@ Foam::dpmCloud::dpmCloud
     g_(g),
     classNames_(dict_.subDict("classes").toc()),
     drag_(dragModel::New(dict_, gas.rho(), gas.mu())),
+    formulation_(readCouplingFormulation(dict_)),
     frozen_(dict_.lookupOrDefault<bool>("frozen", false)),
     sortInterval_
     (
@@ -402,6 +404,9 @@ Foam::dpmCloud::dpmCloud
         zeroGradientFvPatchVectorField::typeName
     )
 {
+    Info<< "Coupling: " << formulationDescription(formulation_).c_str()
+        << endl;
+
     if (classNames_.size() < 1)
     {
         FatalIOErrorInFunction(dict_)
@@ -523,7 +528,11 @@ Foam::label Foam::dpmCloud::subSteps() const
 }
 
 
-void Foam::dpmCloud::interpolateGas(const volVectorField& U)
+void Foam::dpmCloud::interpolateGas
+(
+    const volVectorField& U,
+    const volScalarField& p_rgh
+)
 {
     // Renumber the particles by cell now and then; the overlaps follow the
     // new numbers, the other per-particle arrays are made anew below
@@ -591,7 +600,58 @@ void Foam::dpmCloud::interpolateGas(const volVectorField& U)
         fX[i] = -rhoGas_*Vp*g_.x();
         fY[i] = -rhoGas_*Vp*g_.y();
     }
+    if (formulation_ == couplingFormulation::A)
+    {
+        addPressureGradientForce(p_rgh);
+    }
     Ustar_.primitiveFieldRef() = Uc;
+}
+
+
+void Foam::dpmCloud::addPressureGradientForce(const volScalarField& p_rgh)
+{
+    // -V_p grad p = -V_p grad p_rgh - rho_g V_p g, interpolated like the gas
+    // velocity. The drag scales with the same eps_g as the gas's share of
+    // grad p, so that A and B give the same fixed-bed pressure drop and Umf
+    const volVectorField gradP(fvc::grad(p_rgh));
+    const vectorField& gp = gradP.primitiveField();
+    const scalarField& phiP = particleFraction_.primitiveField();
+    const scalar pi = constant::mathematical::pi;
+    const label n = size();
+    const double* x = dem_->x();
+    const double* y = dem_->y();
+    const double* d = dem_->diameter();
+    double* Kd = dem_->dragCoefficient();
+    double* fX = dem_->extraForceX();
+    double* fY = dem_->extraForceY();
+    for (label i = 0; i < n; ++i)
+    {
+        label cells[4];
+        scalar w[4];
+        grid_.interpolationStencil(x[i], y[i], cells, w);
+        scalar epsG = 0;
+        vector gradPi = Zero;
+        for (int k = 0; k < 4; ++k)
+        {
+            epsG += w[k]*max(1 - phiP[cells[k]], voidageMin_);
+            gradPi += w[k]*gp[cells[k]];
+        }
+        const scalar Vp = pi*d[i]*d[i]*d[i]/6;
+        K_[i] *= epsG;
+        Kd[i] = K_[i];
+        fX[i] -= Vp*gradPi.x();
+        fY[i] -= Vp*gradPi.y();
+    }
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::dpmCloud::gasFraction() const
+{
+    return tmp<volScalarField>::New
+    (
+        "gasFraction",
+        max(1 - particleFraction_, dimensionedScalar("voidageMin", dimless, voidageMin_))
+    );
 }
 
 
@@ -628,6 +688,22 @@ Foam::vector Foam::dpmCloud::fluidForce(const label i) const
 }
 
 
+Foam::vector Foam::dpmCloud::exchangedForce(const label i) const
+{
+    if (formulation_ == couplingFormulation::B)
+    {
+        return fluidForce(i);
+    }
+    // The drag K_i (u_i - mean v_i), as the DEM sums it into the mean force
+    const scalar vx = frozen_ ? 0 : dem_->meanVelocityX()[i];
+    const scalar vy = frozen_ ? 0 : dem_->meanVelocityY()[i];
+    return K_[i]*vector
+    (
+        dem_->gasVelocityX()[i] - vx, dem_->gasVelocityY()[i] - vy, 0
+    );
+}
+
+
 void Foam::dpmCloud::mapToGas()
 {
     // The reaction on the gas, shared by the cells as the particle's area
@@ -640,7 +716,7 @@ void Foam::dpmCloud::mapToGas()
     Fp = Zero;
     for (label i = 0; i < n; ++i)
     {
-        const vector F = fluidForce(i);
+        const vector F = exchangedForce(i);
         for (label k = 4*i; k < 4*i + overlapCount_[i]; ++k)
         {
             const label c = overlapCells_[k];
@@ -755,7 +831,7 @@ void Foam::dpmCloud::reportBalance(Ostream& os) const
     scalar particleArea = 0;
     for (label i = 0; i < size(); ++i)
     {
-        if (K_.size() == size()) particleForce += fluidForce(i);
+        if (K_.size() == size()) particleForce += exchangedForce(i);
         const scalar d = dem_->diameter()[i];
         particleArea += constant::mathematical::pi*d*d/4;
     }
