@@ -11,6 +11,7 @@
 # force the particles feel and that the particles' area is mapped to cells
 # in full (round-off: relative 1e-10).
 #   fluidizedPressureDrop.sh <workDir> <pressure in bar>
+# The formulation (A or B, default B) from the environment: FORMULATION=A.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 bar="${2:?pressure in bar}"
@@ -24,6 +25,7 @@ setEntry constant/particleProperties classes.small.count 1200
 setEntry constant/particleProperties classes.large.count 260
 setEntry system/controlDict endTime 2
 setEntry system/controlDict writeInterval 0.5
+setFormulation
 cat >>system/controlDict <<'EOF2'
 functions
 {

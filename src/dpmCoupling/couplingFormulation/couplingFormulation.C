@@ -15,7 +15,8 @@ Foam::couplingFormulation Foam::readCouplingFormulation
     }
 
     // The tokens, not a word: `formulation 1;` gets the same message
-    const tokenList& tokens = dict.lookup(key, keyType::LITERAL);
+    ITstream& is = dict.lookup(key, keyType::LITERAL);
+    const tokenList& tokens = is;
     if (tokens.size() == 1 && tokens[0].isWord())
     {
         if (tokens[0].wordToken() == "A") return couplingFormulation::A;
@@ -27,8 +28,9 @@ Foam::couplingFormulation Foam::readCouplingFormulation
     {
         value<< (i ? " " : "") << tokens[i];
     }
-    FatalIOErrorInFunction(dict)
-        << "Entry '" << key << "' = " << value.str() << " in " << dict.name()
+    FatalIOErrorInFunction(is)
+        << "Entry '" << key << "' = " << value.str().c_str() << " in "
+        << dict.name()
         << " is not allowed; allowed: B (the gas sees the whole pressure"
         << " gradient, the paper's, default) or A (particles also feel"
         << " -V_p grad p, the gas eps grad p)" << exit(FatalIOError);

@@ -422,6 +422,7 @@ Foam::dpmCloud::dpmCloud
     );
 
     subSteps();         // the DEM step must divide the CFD step
+    warnThinSlab();
     initialise(mode);
 
     writer_.reset
@@ -605,6 +606,30 @@ void Foam::dpmCloud::interpolateGas
         addPressureGradientForce(p_rgh);
     }
     Ustar_.primitiveFieldRef() = Uc;
+}
+
+
+void Foam::dpmCloud::warnThinSlab() const
+{
+    if (formulation_ != couplingFormulation::A) return;
+
+    // The densest packing (hexagonal discs) of the largest particles fills
+    // phiP = pi/(2 sqrt 3) (2/3) d/depth of a cell's volume
+    scalar dMax = 0;
+    for (const scalar d : classDiameters()) dMax = max(dMax, d);
+    const scalar phiPMax =
+        constant::mathematical::pi/(3*sqrt(3.0))*dMax/grid_.depth();
+    if (phiPMax > 1 - voidageMin_)
+    {
+        WarningInFunction
+            << "Formulation A in " << dict_.name() << ": the bed depth "
+            << grid_.depth() << " m is thin for particles of " << dMax
+            << " m: packed densely they fill phiP = " << phiPMax
+            << " of a cell, more than 1 - voidageMin = " << 1 - voidageMin_
+            << "; there eps_g = 1 - phiP is held at voidageMin and A no"
+            << " longer matches B's pressure drop (docs/model.md,"
+            << " formulations A and B)" << endl;
+    }
 }
 
 
