@@ -12,9 +12,8 @@ Description
     The gas: volume-averaged incompressible Navier-Stokes in the formulation
     where the gas sees the whole pressure gradient (B, the paper's) or its
     share eps_g grad p (A; `formulation` in constant/particleProperties),
-    solved with PIMPLE on a
-    one-cell-thick Cartesian mesh; p_rgh is the pressure less the gas's
-    hydrostatic head, relative to the outlet. The particles: the DEM of
+    solved with PIMPLE on a one-cell-thick Cartesian mesh; p_rgh is the
+    pressure less the gas's hydrostatic head, relative to the outlet. The particles: the DEM of
     src/dem advanced in sub-steps each CFD step, with the drag coupled
     semi-implicitly. See docs/model.md.
 
