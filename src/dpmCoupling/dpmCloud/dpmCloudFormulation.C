@@ -22,7 +22,8 @@ void Foam::dpmCloud::warnThinSlab() const
     if (phiPMax > 1 - voidageMin_)
     {
         WarningInFunction
-            << "Formulation A in " << dict_.name() << ": the bed depth "
+            << "Formulation A in " << dict_.instance()/dict_.name()
+            << ": the bed depth "
             << grid_.depth() << " m is thin for particles of " << dMax
             << " m: packed densely they fill phiP = " << phiPMax
             << " of a cell, more than 1 - voidageMin = " << 1 - voidageMin_
