@@ -10,9 +10,10 @@ Description
     particle mixtures (Norouzi, Mostoufi and Sotudeh-Gharebagh, 2012).
 
     The gas: volume-averaged incompressible Navier-Stokes in the formulation
-    where the gas sees the whole pressure gradient, solved with PIMPLE on a
-    one-cell-thick Cartesian mesh; p_rgh is the pressure less the gas's
-    hydrostatic head, relative to the outlet. The particles: the DEM of
+    where the gas sees the whole pressure gradient (B, the paper's) or its
+    share eps_g grad p (A; `formulation` in constant/particleProperties),
+    solved with PIMPLE on a one-cell-thick Cartesian mesh; p_rgh is the
+    pressure less the gas's hydrostatic head, relative to the outlet. The particles: the DEM of
     src/dem advanced in sub-steps each CFD step, with the drag coupled
     semi-implicitly. See docs/model.md.
 
@@ -87,7 +88,7 @@ int main(int argc, char *argv[])
 
         // Particles: gas at the particles, DEM sub-steps, reaction on the gas
         timers.start();
-        particles.interpolateGas(U);
+        particles.interpolateGas(U, p_rgh);
         timers.stop(solverTimers::coupling);
 
         timers.start();
@@ -97,6 +98,10 @@ int main(int argc, char *argv[])
         timers.start();
         particles.mapToGas();
         voidagef = fvc::interpolate(voidage);
+        if (particles.formulation() == couplingFormulation::A)
+        {
+            gasFractionf = fvc::interpolate(particles.gasFraction());
+        }
         timers.stop(solverTimers::coupling);
 
         // Gas: PIMPLE

@@ -12,6 +12,10 @@
 # has its particles' volume fraction, which depends on the bed depth. The
 # slab is therefore made as deep as makes the two equal for this lattice:
 # depth = (2/3) d (pi/4)/(1-e). docs/model.md discusses the depth.
+#
+# Formulation A (Zhou et al. 2010 set I) gives the same gradient: there the
+# gas carries eps_g grad p and the drag is eps_g K_B, eps_g = 1 - phiP.
+#   ergunFixedBed.sh <workDir> [A|B]    (default B)
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 
@@ -37,6 +41,7 @@ deltaT 1e-5;
 frozen true;
 initialBed { positions "\$FOAM_CASE/positions.txt"; }
 EOF2
+setFormulation "${2:-}"
 setEntry constant/gasProperties U0byUmf 0.5
 runSolver
 

@@ -12,6 +12,7 @@
 # in full (round-off: relative 1e-10).
 # Every drag model must pass it (the weight does not depend on the drag).
 #   fluidizedPressureDrop.sh <workDir> <pressure in bar> [dragModel]
+# The formulation (A or B, default B) from the environment: FORMULATION=A.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 bar="${2:?pressure in bar}"
@@ -27,6 +28,7 @@ setEntry constant/particleProperties classes.small.count 1200
 setEntry constant/particleProperties classes.large.count 260
 setEntry system/controlDict endTime 2
 setEntry system/controlDict writeInterval 0.5
+setFormulation
 cat >>system/controlDict <<'EOF2'
 functions
 {

@@ -6,6 +6,9 @@
 # the gas's weight all act. Tolerances, round-off level against the
 # column's hydrostatic head rho_g g H = 3.5 Pa and fluidizing velocities of
 # order 1 m/s: |p_rgh| < 1e-6 rho_g g H and |U| < 1e-6 m/s after 0.1 s.
+# In formulation A the gas carries no buoyancy reaction and no weight term
+# (-eps_g grad p + rho eps_g g = -eps_g grad p_rgh): the same state.
+#   hydrostatics.sh <workDir> [A|B]    (default B)
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 
@@ -14,6 +17,7 @@ cd "$workDir/case" || fail "cd"
 setEntry constant/gasProperties inletPatch none
 setEntry 0/U boundaryField.inlet "{ type noSlip; }"
 setEntry constant/particleProperties frozen true
+setFormulation "${2:-}"
 setEntry system/controlDict endTime 0.1
 setEntry system/controlDict writeInterval 0.1
 runSolver

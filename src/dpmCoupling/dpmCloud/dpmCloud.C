@@ -203,6 +203,7 @@ Foam::dpmCloud::dpmCloud
     g_(g),
     classNames_(dict_.subDict("classes").toc()),
     drag_(dragModel::New(dict_, gas.rho(), gas.mu())),
+    formulation_(readCouplingFormulation(dict_)),
     frozen_(dict_.lookupOrDefault<bool>("frozen", false)),
     sortInterval_
     (
@@ -262,6 +263,9 @@ Foam::dpmCloud::dpmCloud
         zeroGradientFvPatchVectorField::typeName
     )
 {
+    Info<< "Coupling: " << formulationDescription(formulation_).c_str()
+        << endl;
+
     if (classNames_.size() < 1)
     {
         FatalIOErrorInFunction(dict_)
@@ -282,6 +286,7 @@ Foam::dpmCloud::dpmCloud
     checkSettings(gas, mode);
 
     subSteps();         // the DEM step must divide the CFD step
+    warnThinSlab();
     initialise(mode);
     if (mode == startMode::run)
     {
@@ -392,7 +397,11 @@ Foam::label Foam::dpmCloud::subSteps() const
 }
 
 
-void Foam::dpmCloud::interpolateGas(const volVectorField& U)
+void Foam::dpmCloud::interpolateGas
+(
+    const volVectorField& U,
+    const volScalarField& p_rgh
+)
 {
     // Renumber the particles by cell now and then; the overlaps follow the
     // new numbers, the other per-particle arrays are made anew below
@@ -465,6 +474,10 @@ void Foam::dpmCloud::interpolateGas(const volVectorField& U)
         fX[i] = -rhoGas_*Vp*g_.x();
         fY[i] = -rhoGas_*Vp*g_.y();
     }
+    if (formulation_ == couplingFormulation::A)
+    {
+        addPressureGradientForce(p_rgh);
+    }
     Ustar_.primitiveFieldRef() = Uc;
 }
 
@@ -521,7 +534,7 @@ void Foam::dpmCloud::mapToGas()
     Fp = Zero;
     for (label i = 0; i < n; ++i)
     {
-        const vector F = fluidForce(i);
+        const vector F = exchangedForce(i);
         for (label k = 4*i; k < 4*i + overlapCount_[i]; ++k)
         {
             const label c = overlapCells_[k];
@@ -695,7 +708,7 @@ void Foam::dpmCloud::reportBalance(Ostream& os) const
     scalar particleArea = 0;
     for (label i = 0; i < size(); ++i)
     {
-        if (K_.size() == size()) particleForce += fluidForce(i);
+        if (K_.size() == size()) particleForce += exchangedForce(i);
         const scalar d = dem_->diameter()[i];
         particleArea += constant::mathematical::pi*d*d/4;
     }
