@@ -63,7 +63,8 @@ def find_cases(study_dir):
         p = float(s["pressure"])
         cases.append({"dir": d, "case": name, "variant": variant,
                       "wSmall": float(s["wSmall"]), "pressure": int(p) if p == int(p) else p,
-                      "seed": int(float(s["seed"])) if seeded and "seed" in s else None})
+                      "seed": int(float(s["seed"])) if seeded and "seed" in s else None,
+                      "endTime": float(s["endTime"]) if "endTime" in s else None})
     cases.sort(key=lambda c: (c["variant"] != BASELINE, c["variant"], c["wSmall"],
                               c["pressure"], c["seed"] or 0))
     return cases
@@ -103,7 +104,8 @@ def case_row(c, X, rate_window):
     inRate = (t > t0 + 1e-9) & (t <= t1 + 1e-9)
     row = OrderedDict(case=c["case"], variant=c["variant"], seed=c["seed"] or "",
                       wSmall=c["wSmall"], pressure=c["pressure"], Umf=np.nan, U0=np.nan,
-                      time=t[-1], M0=M["M"][0], Mfinal=M["M"][-1], Mmean=M["M"][last].mean(),
+                      time=t[-1], finished=c["endTime"] is None or t[-1] >= c["endTime"] - 1e-6,
+                      M0=M["M"][0], Mfinal=M["M"][-1], Mmean=M["M"][last].mean(),
                       Mrate=(M["M"][inRate] / M["M"][0]).mean()
                       if inRate.any() and M["M"][0] > 0 and t[-1] >= t1 - 1e-9 else np.nan)
     for k in INDICES:
@@ -156,12 +158,16 @@ def groups_of(rows):
 
 def ensembles(rows):
     """One row per (variant, w, p): n, then mean and half-width of each
-    quantity of ENSEMBLE over the seeds."""
+    quantity of ENSEMBLE over the seeds that reached their end time (a
+    case still running would mix another window in; it is counted as
+    'running')."""
     out = []
-    for (variant, w, p), members in groups_of(rows).items():
+    for (variant, w, p), everyone in groups_of(rows).items():
+        members = [r for r in everyone if r["finished"]]
         e = OrderedDict(variant=variant, wSmall=w, pressure=p, n=len(members),
+                        running=len(everyone) - len(members),
                         seeds=" ".join(str(r["seed"]) for r in members),
-                        time=min(r["time"] for r in members))
+                        time=min(r["time"] for r in members) if members else np.nan)
         for k in ENSEMBLE:
             e[k], e[k + "CI"], _ = ens.mean_ci([r[k] for r in members])
         out.append(e)
@@ -194,9 +200,9 @@ def finding_contrasts(group_keys, variant):
 def findings(rows):
     """Rows of findings.md/csv: each contrast of each variant with its
     difference, interval and sign."""
-    g = groups_of(rows)
+    g = groups_of([r for r in rows if r["finished"]])     # running cases left out
     out = []
-    variants = list(OrderedDict.fromkeys(r["variant"] for r in rows))
+    variants = list(OrderedDict.fromkeys(r["variant"] for r in rows if r["finished"]))
     for v in variants:
         for finding, what, k, a, b, paper in finding_contrasts(g.keys(), v):
             A = [r[k] for r in g[(v,) + a]]
@@ -297,14 +303,16 @@ def write_ensemble(out, ensemble, ewindows, found, X, rate_window):
         f.write("Means over the seeds (random packings) of each variant, mass fraction and "
                 "pressure, +- the half-width of the %d %% Student-t interval (none for one "
                 "seed). M mean, the indices and the bed statistics: over the last %g s; "
-                "M/M(0): over %g < t <= %g s.\n\n" % (lvl, X, t0, t1))
-        f.write("| variant | w_small | p (bar) | n | t (s) | M(0) | M mean | M/M(0) "
+                "M/M(0): over %g < t <= %g s. Only cases that reached their end time count "
+                "(n); 'running': those that have not yet.\n\n" % (lvl, X, t0, t1))
+        f.write("| variant | w_small | p (bar) | n | running | t (s) | M(0) | M mean | M/M(0) "
                 "| vertical | horizontal | bubble fraction | emulsion voidage "
                 "| speed small | speed large |\n")
-        f.write("|" + "---|" * 14 + "\n")
+        f.write("|" + "---|" * 15 + "\n")
         for e in ensemble:
-            f.write("| %s | %.2f | %g | %d | %.2f | %s |\n" % (
-                e["variant"], e["wSmall"], e["pressure"], e["n"], e["time"], " | ".join(
+            f.write("| %s | %.2f | %g | %d | %d | %.2f | %s |\n" % (
+                e["variant"], e["wSmall"], e["pressure"], e["n"], e["running"], e["time"],
+                " | ".join(
                     ens.fmt(e[k], e[k + "CI"]) for k in (
                         "M0", "Mmean", "Mrate", "vertical", "horizontal", "bubbleFraction",
                         "emulsionVoidage", "speedRmsSmall", "speedRmsLarge"))))
