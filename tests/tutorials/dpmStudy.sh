@@ -23,7 +23,9 @@
 #   7. -variant upwind: the case's fvSchemes edited, the edits recorded in
 #      constant/variant and results/variants.md; a rerun from that record
 #      makes the same case; a changed variant file, an unknown variant and
-#      a variant naming an entry the template lacks are refused.
+#      a variant naming an entry the template lacks are refused;
+#   8. a case that a second dpmStudy started while the first was busy is
+#      skipped by the first when its turn comes (not run twice).
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 export WM_PROJECT_SITE="${WM_PROJECT_SITE:-$DPMFOAM2D_PROJECT}"
@@ -189,4 +191,32 @@ grep -q "no variant 'upwnid' .*the template's variants: .*upwind" log.unknown \
 echo "system/fvSchemes divSchemes/div(phi,U) Gauss upwind" > changed/wrongEntry
 dpmStudy wrong "${short[@]}" -variant "$PWD/changed/wrongEntry" > log.wrong 2>&1 && fail "a wrong entry ran"
 grep -q "has no entry 'divSchemes/div(phi,U)'" log.wrong || { cat log.wrong; fail "no message on a wrong entry"; }
-pass "dpmStudy runs, resumes after a kill, shares the bed, sums up, sets U0 - Umf, seeds, variants"
+echo "8. a case another dpmStudy started meanwhile is skipped when its turn comes"
+ov=(-w 0.5 -scale 0.05 -settleTime 0.1 -endTime 0.04 -writeInterval 0.02 -mean 0.02
+    -noPictures -interval 1 -j 1)
+solverIn() { for p in $(pgrep -x dpmFoam2D); do [ "$(readlink /proc/$p/cwd)" = "$(cd "$1" && pwd -P)" ] && echo $p; done; }
+waitSolver()
+{
+    local s=
+    for i in $(seq 1 600); do [ -d "$1" ] && s="$(solverIn "$1")"; [ -n "$s" ] && break; sleep 0.2; done
+    [ -n "$s" ] || fail "no solver started in $1"
+    echo $s
+}
+dpmStudy overlap "${ov[@]}" -p 1 64 > log.overlapA 2>&1 &
+pidA=$!
+soA="$(waitSolver overlap/w0.50_1bar)"
+kill -STOP $soA                         # holds the first study at its 1-bar case
+dpmStudy overlap "${ov[@]}" -p 64 > log.overlapB 2>&1 &
+pidB=$!
+soB="$(waitSolver overlap/w0.50_64bar)"
+kill -STOP $soB                         # the 64-bar case is running, in the second study
+kill -CONT $soA
+for i in $(seq 1 600); do grep -q "skipped (process $soB runs in it)" log.overlapA && break; sleep 0.2; done
+kill -CONT $soB
+wait $pidA || { cat log.overlapA; fail "the first study failed"; }
+wait $pidB || { cat log.overlapB; fail "the second study failed"; }
+grep -q "^w0.50_64bar *skipped (process $soB runs in it)" log.overlapA \
+    || { cat log.overlapA; fail "the first study did not skip the case the second had started"; }
+[ -e overlap/w0.50_64bar/log.dpmFoam2D.1 ] && fail "the 64-bar case was started twice"
+grep -q "^End" overlap/w0.50_64bar/log.dpmFoam2D || fail "the 64-bar case did not finish"
+pass "dpmStudy runs, resumes after a kill, shares the bed, sums up, sets U0 - Umf, seeds, variants, skips a case started meanwhile"
