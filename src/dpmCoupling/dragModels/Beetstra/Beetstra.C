@@ -1,5 +1,4 @@
 #include "Beetstra.H"
-#include "knownEntries.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
 
@@ -15,20 +14,13 @@ namespace dragModels
 
 Foam::dragModels::Beetstra::Beetstra
 (
-    const dictionary& coeffs,
+    const dictionary&,
     const scalar rho,
     const scalar mu
 )
 :
     dragModel(rho, mu)
-{
-    // No coefficients: any entry of <type>Coeffs is a mistake
-    checkKnownEntries
-    (
-        coeffs, wordList(),
-        "constant/particleProperties/" + typeName + "Coeffs"
-    );
-}
+{}
 
 
 Foam::scalar Foam::dragModels::Beetstra::F(const scalar a, const scalar Re)

@@ -1,7 +1,6 @@
 #include "DiFelice.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
-#include "knownEntries.H"
 
 namespace Foam
 {
@@ -15,19 +14,13 @@ namespace dragModels
 
 Foam::dragModels::DiFelice::DiFelice
 (
-    const dictionary& coeffs,
+    const dictionary&,
     const scalar rho,
     const scalar mu
 )
 :
     dragModel(rho, mu)
-{
-    checkKnownEntries
-    (
-        coeffs, wordList(),
-        "constant/particleProperties/" + typeName + "Coeffs"
-    );
-}
+{}
 
 
 void Foam::dragModels::DiFelice::dragCoefficient

@@ -2,7 +2,6 @@
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
 #include "positiveEntry.H"
-#include "knownEntries.H"
 
 namespace Foam
 {
@@ -26,13 +25,7 @@ Foam::dragModels::ErgunWenYu::ErgunWenYu
     (
         boundedEntryOrDefault(coeffs, "switchVoidage", 0.8, 0, 1, true)
     )
-{
-    checkKnownEntries
-    (
-        coeffs, {"switchVoidage"},
-        "constant/particleProperties/" + typeName + "Coeffs"
-    );
-}
+{}
 
 
 void Foam::dragModels::ErgunWenYu::dragCoefficient
@@ -52,23 +45,9 @@ void Foam::dragModels::ErgunWenYu::dragCoefficient
         const scalar d = diameter[i];
         const scalar Vp = pi*d*d*d/6;
 
-        if (eps < switchVoidage_)
-        {
-            K[i] = Vp*
-            (
-                150*(1 - eps)*mu_/(eps*eps*d*d)
-              + 1.75*rho_*slip[i]/(eps*d)
-            );
-        }
-        else
-        {
-            // C_D |u-v| written without dividing by Re, finite at zero slip
-            const scalar Re = rho_*d*eps*slip[i]/mu_;
-            const scalar CdSlip =
-                Re < 1000
-              ? 24*mu_/(rho_*d*eps)*(1 + 0.15*std::pow(Re, 0.687))
-              : 0.44*slip[i];
-            K[i] = Vp*0.75*CdSlip*rho_/d*std::pow(eps, -2.65);
-        }
+        K[i] =
+            eps < switchVoidage_
+          ? ergunK(rho_, mu_, Vp, eps, d, slip[i])
+          : wenYuK(rho_, mu_, Vp, eps, d, slip[i]);
     }
 }

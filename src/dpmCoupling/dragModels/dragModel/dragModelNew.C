@@ -1,4 +1,5 @@
 #include "dragModel.H"
+#include "knownEntries.H"
 
 Foam::autoPtr<Foam::dragModel> Foam::dragModel::New
 (
@@ -24,8 +25,12 @@ Foam::autoPtr<Foam::dragModel> Foam::dragModel::New
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<dragModel>
+    const dictionary coeffs(dict.subOrEmptyDict(modelType + "Coeffs"));
+    autoPtr<dragModel> model(cstrIter()(coeffs, rho, mu));
+    checkKnownEntries
     (
-        cstrIter()(dict.subOrEmptyDict(modelType + "Coeffs"), rho, mu)
+        coeffs, model->coefficientNames(),
+        "constant/particleProperties/" + modelType + "Coeffs"
     );
+    return model;
 }
