@@ -1,12 +1,18 @@
 #!/bin/bash
 # A bubbling bed's time-averaged pressure drop equals the particles' weight
-# less their buoyancy over the bed's cross-section (width x depth):
-#   dp = (M - rho_g V_p,total) g / (W D)
-# (momentum balance of a fluidized bed; p_rgh already excludes the gas's
-# own hydrostatic head). Tolerance 5 % (issue 4). The binary mix of the
-# paper at w_small ~ 0.5, at U0/Umf = 2 so that the large particles are
-# fluidized too, averaged over the last 1.5 s of 2 s of gas (a narrow bed
-# slugs: shorter windows scatter by +-10 %).
+# less their buoyancy over the bed's cross-section (width x depth), plus
+# the rate at which the particles gained upward momentum over the window:
+#   dp = ((M - rho_g V_p,total) g + (P(t1) - P(t0))/(t1 - t0)) / (W D)
+# (momentum balance of the particles, P = sum m v_y from the saved states;
+# p_rgh already excludes the gas's own hydrostatic head). Tolerance 5 %
+# (issue 4). The binary mix of the paper at w_small ~ 0.5, at U0/Umf = 2
+# so that the large particles are fluidized too, averaged over the last
+# 1.5 s of 2 s of gas. The momentum term is not small in this narrow,
+# slugging bed: over 1.5 s it moves the balance by up to 2.3 % of the
+# weight, over 0.5 s by up to 6 %, with a sign set by the slug's phase at
+# the window's ends (docs/model.md, "Drag closures", DiFelice). Left out,
+# as not known to the test: the floor's share (about 7 % at 1 bar, 5 % at
+# 64) and a gas-side excess of about 3.6 %, both measured there.
 # The same run checks, at every write, that the gas carries exactly the
 # force the particles feel and that the particles' area is mapped to cells
 # in full (round-off: relative 1e-10).
@@ -51,6 +57,7 @@ grep -q "drag model $model" log.dpmFoam2D || fail "the log does not name the dra
 py - "$bar" "$model" <<'PY' || fail "fluidized bed pressure drop at $bar bar ($model)"
 import sys, glob, re
 import numpy as np
+import h5py
 bar = float(sys.argv[1])
 rho_g, g, W, D = 1.204 * bar, 9.81, 0.06, 2.5e-3
 d = np.array([1.5e-3, 2.5e-3]); n = np.array([1200, 260]); rho_p = 2525
@@ -59,9 +66,21 @@ expected = (rho_p - rho_g) * V * g / (W * D)
 
 data = np.loadtxt(glob.glob("postProcessing/inletPressure/*/surfaceFieldValue.dat")[0])
 t, p = data[:, 0], data[:, 1]
-mean = p[t >= 0.5].mean()
-err = abs(mean - expected) / expected
-print(f"{sys.argv[2]}, {bar:g} bar: mean inlet p_rgh over 0.5-2 s {mean:.1f} Pa, (W - B)/A {expected:.1f} Pa, error {100*err:.2f} %")
+t0, t1 = 0.5, 2.0
+mean = p[t >= t0].mean()
+
+# The particles' upward momentum at the window's ends (particles/<t>.h5)
+def momentum(time):
+    with h5py.File(f"particles/{time:g}.h5", "r") as f:
+        dp = f["diameter"][:].reshape(-1).astype(float)
+        vy = f["velocity"][:, 1].astype(float)
+    return np.sum(rho_p * np.pi * dp**3 / 6 * vy)
+dPdt = (momentum(t1) - momentum(t0)) / (t1 - t0) / (W * D)
+err = abs(mean - (expected + dPdt)) / expected
+print(f"{sys.argv[2]}, {bar:g} bar: mean inlet p_rgh over {t0:g}-{t1:g} s {mean:.1f} Pa, "
+      f"(W - B)/A {expected:.1f} Pa, particles' momentum gain {dPdt:+.1f} Pa "
+      f"({100*dPdt/expected:+.2f} %), error {100*err:.2f} % "
+      f"(without the momentum term {100*abs(mean - expected)/expected:.2f} %)")
 
 # Exchange balance at each write
 log = open("log.dpmFoam2D").read()
