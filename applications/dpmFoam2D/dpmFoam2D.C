@@ -32,6 +32,7 @@ Usage
 #include "incompleteTimes.H"
 #include "writeFailureReason.H"
 #include "fixedValueFvPatchFields.H"
+#include "staticReconstruction.H"
 
 #define PIMPLE_CONTROL
 

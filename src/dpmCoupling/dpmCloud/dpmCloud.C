@@ -532,9 +532,16 @@ void Foam::dpmCloud::mapToGas()
     vectorField& Fp = Fp_.primitiveFieldRef();
     Kc = 0;
     Fp = Zero;
+    // B, moving particles: the DEM's mean force as it is, read here rather
+    // than through a call per particle
+    const bool meanForce =
+        formulation_ == couplingFormulation::B && !frozen_;
+    const double* FX = dem_->meanFluidForceX();
+    const double* FY = dem_->meanFluidForceY();
     for (label i = 0; i < n; ++i)
     {
-        const vector F = exchangedForce(i);
+        const vector F =
+            meanForce ? vector(FX[i], FY[i], 0) : exchangedForce(i);
         for (label k = 4*i; k < 4*i + overlapCount_[i]; ++k)
         {
             const label c = overlapCells_[k];
