@@ -2,51 +2,17 @@
 // dt = 1e-5 s): particle-steps per second on 1 and 2 threads, at rest and with a uniform
 // drag that makes the bed roughly weightless. Figures go to docs/performance.md.
 //
-// The settled bed is made once (pack, settle to rest on 2 threads) and cached in
-// $DEM_BENCH_STATE (default /tmp/demBench-settledBed.state).
+// The settled bed is made once (BenchBeds.hpp).
 
-#include "dem/Facade.hpp"
+#include "BenchBeds.hpp"
 
 #include <benchmark/benchmark.h>
 
-#include <cstdlib>
-#include <memory>
-#include <string>
+#include <algorithm>
 
 namespace {
 
-dem::Settings bedSettings(int threads)
-{
-    dem::Settings s;
-    s.classes = {{"small", 1.5e-3, 2525.0}, {"large", 2.5e-3, 2525.0}};
-    s.box = {0.0, 0.15, 0.0, 0.9};
-    s.dt = 1e-5;
-    s.nThreads = threads;
-    return s;
-}
-
-std::string statePath()
-{
-    const char* env = std::getenv("DEM_BENCH_STATE");
-    return env ? env : "/tmp/demBench-settledBed.state";
-}
-
-std::unique_ptr<dem::Simulation> settledBed(int threads)
-{
-    auto sim = std::make_unique<dem::Simulation>(bedSettings(threads));
-    try {
-        sim->load(statePath());
-        return sim;
-    } catch (const dem::Error&) {
-        // No usable cache: make the bed as the paper does.
-    }
-    auto fresh = std::make_unique<dem::Simulation>(bedSettings(2));
-    fresh->packRandom({6610, 1440}, {0.0, 0.15, 0.0, 0.35}, 2012);
-    fresh->settle(1.5, 1e-12);   // as the SettledBed test: at rest after ~0.9 s
-    fresh->save(statePath());
-    sim->load(statePath());
-    return sim;
-}
+using demBench::settledBed;
 
 /// Arguments: threads, drag (0: none, 1: uniform drag holding the bed's weight at zero slip,
 /// u = 0.5 m/s, as in a bed at minimum fluidization; the bed then loosens and its contacts

@@ -47,20 +47,23 @@ void CellMapper::unlinkColumns(int r, const double* x, std::vector<int>& heads) 
 }
 
 NbsSearch::NbsSearch(double xMin, double xMax, double yMin, double yMax, double minCellSize)
-    : mapper_(xMin, xMax, yMin, yMax, minCellSize),
-      headsThisRow_(mapper_.nColumns(), -1),
-      headsRowBelow_(mapper_.nColumns(), -1)
+    : mapper_(xMin, xMax, yMin, yMax, minCellSize)
 {
 }
 
-void NbsSearch::findPairs(const double* x, const double* y, const double* r, std::size_t n,
-                          double margin, std::vector<IndexPair>& pairs)
+void NbsSearch::walkRows(int first, int last, const double* x, const double* y,
+                         const double* r, std::size_t n, double margin, Band& band) const
 {
-    pairs.clear();
-    columnNext_.resize(n);
-    mapper_.linkRows(y, n);
-
     const int nColumns = mapper_.nColumns();
+    band.headsThisRow.assign(nColumns, -1);
+    band.headsRowBelow.assign(nColumns, -1);
+    band.columnNext.resize(n);
+    std::vector<int>& columnNext = band.columnNext;
+    std::vector<int>& headsThisRow = band.headsThisRow;
+    std::vector<int>& headsRowBelow = band.headsRowBelow;
+    std::vector<IndexPair>& pairs = band.pairs;
+    pairs.clear();
+
     auto test = [&](int i, int j) {
         const double dx = x[j] - x[i];
         const double dy = y[j] - y[i];
@@ -70,44 +73,83 @@ void NbsSearch::findPairs(const double* x, const double* y, const double* r, std
         }
     };
     auto testList = [&](int i, int head) {
-        for (int j = head; j >= 0; j = columnNext_[j]) test(i, j);
+        for (int j = head; j >= 0; j = columnNext[j]) test(i, j);
     };
 
     // Half stencil: own cell (later entries only), east, and the three cells of the row
     // below (south-west, south, south-east): every neighbouring cell pair is visited once.
-    int linkedBelow = -1;   // row whose column lists are in headsRowBelow_, -1 if none
-    for (int row = 0; row < mapper_.nRows(); ++row) {
+    int linkedBelow = -1;   // row whose column lists are in headsRowBelow, -1 if none
+    if (first > 0 && mapper_.rowHead(first - 1) >= 0) {
+        mapper_.linkColumns(first - 1, x, headsRowBelow, columnNext);
+        linkedBelow = first - 1;
+    }
+    for (int row = first; row < last; ++row) {
         if (mapper_.rowHead(row) < 0) continue;
         if (linkedBelow != row - 1 && linkedBelow >= 0) {
-            mapper_.unlinkColumns(linkedBelow, x, headsRowBelow_);
+            mapper_.unlinkColumns(linkedBelow, x, headsRowBelow);
             linkedBelow = -1;
         }
-        mapper_.linkColumns(row, x, headsThisRow_, columnNext_);
+        mapper_.linkColumns(row, x, headsThisRow, columnNext);
         const bool haveBelow = linkedBelow == row - 1;
 
         for (int i = mapper_.rowHead(row); i >= 0; i = mapper_.rowNext(i)) {
             const int c = mapper_.column(x[i]);
-            testList(i, columnNext_[i]);
-            if (c + 1 < nColumns) testList(i, headsThisRow_[c + 1]);
+            testList(i, columnNext[i]);
+            if (c + 1 < nColumns) testList(i, headsThisRow[c + 1]);
             if (haveBelow) {
-                if (c > 0) testList(i, headsRowBelow_[c - 1]);
-                testList(i, headsRowBelow_[c]);
-                if (c + 1 < nColumns) testList(i, headsRowBelow_[c + 1]);
+                if (c > 0) testList(i, headsRowBelow[c - 1]);
+                testList(i, headsRowBelow[c]);
+                if (c + 1 < nColumns) testList(i, headsRowBelow[c + 1]);
             }
         }
 
-        if (linkedBelow >= 0) mapper_.unlinkColumns(linkedBelow, x, headsRowBelow_);
-        std::swap(headsThisRow_, headsRowBelow_);
+        if (linkedBelow >= 0) mapper_.unlinkColumns(linkedBelow, x, headsRowBelow);
+        std::swap(headsThisRow, headsRowBelow);
         linkedBelow = row;
     }
-    if (linkedBelow >= 0) mapper_.unlinkColumns(linkedBelow, x, headsRowBelow_);
+}
+
+void NbsSearch::findPairs(const double* x, const double* y, const double* r, std::size_t n,
+                          double margin, std::vector<IndexPair>& pairs, int nThreads)
+{
+    mapper_.linkRows(y, n);
+    const int nRows = mapper_.nRows();
+    const int nBands = std::max(1, nThreads);
+    bands_.resize(nBands);
+
+    // Bands of rows with about n / nBands particles each.
+    rowCount_.assign(nRows, 0);
+    for (std::size_t k = 0; k < n; ++k) ++rowCount_[mapper_.row(y[k])];
+    std::vector<int> bandStart(nBands + 1, nRows);
+    bandStart[0] = 0;
+    {
+        std::size_t seen = 0;
+        int b = 1;
+        for (int row = 0; row < nRows && b < nBands; ++row) {
+            seen += rowCount_[row];
+            while (b < nBands && seen * nBands >= static_cast<std::size_t>(b) * n) bandStart[b++] = row + 1;
+        }
+    }
+
+#pragma omp parallel for num_threads(nBands) schedule(static, 1)
+    for (int b = 0; b < nBands; ++b) {
+        walkRows(bandStart[b], bandStart[b + 1], x, y, r, n, margin, bands_[b]);
+    }
+
+    pairs.clear();
+    for (const Band& band : bands_) pairs.insert(pairs.end(), band.pairs.begin(), band.pairs.end());
 }
 
 std::size_t NbsSearch::memoryBytes() const
 {
-    return sizeof(int) * (headsThisRow_.capacity() + headsRowBelow_.capacity()
-                          + 2 * columnNext_.capacity()
-                          + static_cast<std::size_t>(mapper_.nRows()));
+    std::size_t bytes = sizeof(int) * (rowCount_.capacity()
+                                       + 2 * static_cast<std::size_t>(mapper_.nRows()));
+    for (const Band& b : bands_) {
+        bytes += sizeof(int) * (b.headsThisRow.capacity() + b.headsRowBelow.capacity()
+                                + b.columnNext.capacity())
+                 + sizeof(IndexPair) * b.pairs.capacity();
+    }
+    return bytes;
 }
 
 } // namespace dem

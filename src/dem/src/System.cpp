@@ -131,7 +131,8 @@ void System::rebuildNeighbourList()
         }
     }
 
-    search_.findPairs(p_.x.data(), p_.y.data(), p_.radius.data(), n, skin_, found_);
+    search_.findPairs(p_.x.data(), p_.y.data(), p_.radius.data(), n, skin_, found_,
+                      settings_.nThreads);
 
     // Stable counting sort of the found pairs into their groups.
     const std::size_t np = found_.size();
@@ -145,10 +146,15 @@ void System::rebuildNeighbourList()
     pairs_.j.resize(np);
     pairs_.law.resize(np);
     pairs_.xiT.resize(np);
-    for (const IndexPair& q : found_) {
-        const int k = slot[groupOf(q)]++;
-        const int i = q.i;
-        const int j = q.j;
+    std::vector<int>& dest = rebuildScratch_;
+    dest.resize(np);
+    for (std::size_t q = 0; q < np; ++q) dest[q] = slot[groupOf(found_[q])]++;
+    const Index npi = static_cast<Index>(np);
+#pragma omp parallel for num_threads(settings_.nThreads) schedule(static)
+    for (Index q = 0; q < npi; ++q) {
+        const int k = dest[q];
+        const int i = found_[q].i;
+        const int j = found_[q].j;
         pairs_.i[k] = i;
         pairs_.j[k] = j;
         pairs_.law[k] = p_.classIndex[i] * nClasses_ + p_.classIndex[j];
@@ -162,25 +168,39 @@ void System::rebuildNeighbourList()
         pairs_.xiT[k] = xi;
     }
 
-    // Walls: candidates within radius + skin, history carried over by (particle, wall).
+    // Walls: candidates within radius + skin, history carried over by (particle, wall);
+    // counted per particle, then filled, both in parallel.
+    const int nWalls = static_cast<int>(walls_.size());
+    auto isCandidate = [&](int i, int w) {
+        return walls_[w].distance(Eigen::Vector2d(p_.x[i], p_.y[i])) < p_.radius[i] + skin_;
+    };
     WallList next;
     next.start.assign(n + 1, 0);
-    const bool haveOld = wallContacts_.start.size() == n + 1;
+#pragma omp parallel for num_threads(settings_.nThreads) schedule(static)
     for (int i = 0; i < ni; ++i) {
-        const Eigen::Vector2d pos(p_.x[i], p_.y[i]);
-        for (int w = 0; w < static_cast<int>(walls_.size()); ++w) {
-            if (walls_[w].distance(pos) < p_.radius[i] + skin_) {
-                double xi = 0.0;
-                if (haveOld) {
-                    for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
-                        if (wallContacts_.wall[s] == w) xi = wallContacts_.xiT[s];
-                    }
+        int count = 0;
+        for (int w = 0; w < nWalls; ++w) count += isCandidate(i, w);
+        next.start[i + 1] = count;
+    }
+    for (std::size_t q = 0; q < n; ++q) next.start[q + 1] += next.start[q];
+    next.wall.resize(next.start[n]);
+    next.xiT.resize(next.start[n]);
+    const bool haveOld = wallContacts_.start.size() == n + 1;
+#pragma omp parallel for num_threads(settings_.nThreads) schedule(static)
+    for (int i = 0; i < ni; ++i) {
+        int s = next.start[i];
+        for (int w = 0; w < nWalls; ++w) {
+            if (!isCandidate(i, w)) continue;
+            double xi = 0.0;
+            if (haveOld) {
+                for (int o = wallContacts_.start[i]; o < wallContacts_.start[i + 1]; ++o) {
+                    if (wallContacts_.wall[o] == w) xi = wallContacts_.xiT[o];
                 }
-                next.wall.push_back(w);
-                next.xiT.push_back(xi);
             }
+            next.wall[s] = w;
+            next.xiT[s] = xi;
+            ++s;
         }
-        next.start[i + 1] = static_cast<int>(next.wall.size());
     }
     wallContacts_ = std::move(next);
 

@@ -81,6 +81,27 @@ TEST(Nbs, EqualsBruteForceOnSeededConfigurations)
     }
 }
 
+TEST(Nbs, BandsOfRowsGiveTheOneThreadOrder)
+{
+    // The pair order fixes the order of the force sums: 2 and 3 threads must give the
+    // 1-thread list entry for entry, also with more threads than occupied rows.
+    for (int n : {3000, 5}) {
+        const double w = 0.15, h = 0.06, margin = 1.5e-4;
+        NbsSearch nbs(0.0, w, 0.0, h, 2.5e-3 + margin);
+        const Config c = makeConfig(7, n, w, h, nbs.mapper().cellWidth());
+        std::vector<IndexPair> one, many;
+        nbs.findPairs(c.x.data(), c.y.data(), c.r.data(), c.x.size(), margin, one, 1);
+        for (int threads : {2, 3}) {
+            nbs.findPairs(c.x.data(), c.y.data(), c.r.data(), c.x.size(), margin, many, threads);
+            ASSERT_EQ(many.size(), one.size()) << threads << " threads, n " << n;
+            for (std::size_t k = 0; k < one.size(); ++k) {
+                ASSERT_TRUE(many[k].i == one[k].i && many[k].j == one[k].j)
+                    << "entry " << k << ", " << threads << " threads, n " << n;
+            }
+        }
+    }
+}
+
 TEST(Nbs, CellsAreAboutOneLargestDiameter)
 {
     NbsSearch nbs(0.0, 0.15, 0.0, 0.9, 2.65e-3);

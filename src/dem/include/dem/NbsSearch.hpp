@@ -23,18 +23,28 @@ public:
 
     /// All pairs with |x_j - x_i| < r_i + r_j + margin, i < j, in a fixed order (the walk's),
     /// replacing the contents of `pairs`. Requires 2 r_max + margin <= cell size.
+    /// Rows are walked by up to nThreads threads in bands and the bands' pairs joined in
+    /// row order: the same pairs in the same order for any thread count.
     void findPairs(const double* x, const double* y, const double* r, std::size_t n,
-                   double margin, std::vector<IndexPair>& pairs);
+                   double margin, std::vector<IndexPair>& pairs, int nThreads = 1);
 
     const CellMapper& mapper() const { return mapper_; }
     /// Heap memory of the search arrays, bytes.
     std::size_t memoryBytes() const;
 
 private:
+    /// What one thread's band of rows needs: its column lists and the pairs it found.
+    struct Band {
+        std::vector<int> headsThisRow, headsRowBelow, columnNext;
+        std::vector<IndexPair> pairs;
+    };
+    /// Pairs of rows [first, last) into band.pairs (row first - 1 is linked as the row below).
+    void walkRows(int first, int last, const double* x, const double* y, const double* r,
+                  std::size_t n, double margin, Band& band) const;
+
     CellMapper mapper_;
-    std::vector<int> headsThisRow_;
-    std::vector<int> headsRowBelow_;
-    std::vector<int> columnNext_;
+    std::vector<Band> bands_;
+    std::vector<int> rowCount_;
 };
 
 /// Test oracle: every pair tested, O(N^2). Same contract as NbsSearch::findPairs, pairs

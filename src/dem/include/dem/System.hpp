@@ -94,6 +94,7 @@ private:
     WallList wallContacts_;
     NbsSearch search_;
     std::vector<IndexPair> found_;       // scratch of the search
+    std::vector<int> rebuildScratch_;    // where each found pair goes in the list
 
     std::int64_t stepCount_ = 0;
     std::int64_t listBuilds_ = 0;

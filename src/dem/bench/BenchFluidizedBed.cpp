@@ -1,0 +1,110 @@
+// Speed of the DEM on the paper's bed fluidized, as the solver sees it: contacts that open
+// and close, the neighbour list rebuilt every few steps, particles renumbered by cell every
+// 200 steps. Figures go to docs/performance.md.
+//
+// No gas is solved: a drag K = m g / u (u = 0.5 m/s) towards a gas velocity that varies
+// across the bed and in time,
+//   u_y = u (1 + A (cos(2 pi x/W) cos(2 pi f t) + cos(4 pi x/W) sin(2 pi f t))) below
+//   y = H, half of that above,
+// A = 0.5, f = 2 Hz, H = 0.2 m, holds the bed's weight on average and keeps it circulating
+// (columns of particles rise and fall in turn); above H the particles fall back (the
+// solver's bed stays dense because its drag falls as the bed expands). The fluidized state is made once from the settled
+// bed (0.3 s of this forcing) and cached next to it ($DEM_BENCH_STATE + ".fluidized").
+
+#include "BenchBeds.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+constexpr double dtCfd = 1e-4;        // the solver's CFD step: 10 DEM steps
+constexpr long sortEvery = 20;        // CFD steps between sortByCell, as the solver
+constexpr double warmUp = 0.3;        // s of forcing from the settled bed
+
+/// Sets the drag inputs for the CFD step starting at sim.time().
+void setGas(dem::Simulation& sim)
+{
+    const double u = 0.5, a = 0.5, f = 2.0, top = 0.2;
+    const double width = sim.settings().box.xMax - sim.settings().box.xMin;
+    const double wt = 2.0 * pi * f * sim.time();
+    const double c = std::cos(wt), s = std::sin(wt);
+    const std::size_t n = sim.size();
+    const double* x = sim.x();
+    const double* y = sim.y();
+    const double* m = sim.mass();
+    double* K = sim.dragCoefficient();
+    double* uy = sim.gasVelocityY();
+    for (std::size_t i = 0; i < n; ++i) {
+        const double k = 2.0 * pi * x[i] / width;
+        K[i] = m[i] * 9.81 / u;
+        uy[i] = (y[i] < top ? u : 0.5 * u) * (1.0 + a * (std::cos(k) * c + std::cos(2.0 * k) * s));
+    }
+}
+
+/// One CFD step as the solver does it: renumber now and then, set the inputs, advance.
+void cfdStep(dem::Simulation& sim, long cfdStepIndex)
+{
+    if (cfdStepIndex % sortEvery == 0) sim.sortByCell();
+    setGas(sim);
+    sim.advance(dtCfd);
+}
+
+std::unique_ptr<dem::Simulation> fluidizedBed(int threads)
+{
+    const std::string path = demBench::settledStatePath() + ".fluidized";
+    auto sim = std::make_unique<dem::Simulation>(demBench::bedSettings(threads));
+    try {
+        sim->load(path);
+        return sim;
+    } catch (const dem::Error&) {
+        // No usable cache: fluidize the settled bed.
+    }
+    auto fresh = demBench::settledBed(2);
+    const long steps = std::lround(warmUp / dtCfd);
+    for (long k = 0; k < steps; ++k) cfdStep(*fresh, k);
+    fresh->save(path);
+    sim->load(path);
+    return sim;
+}
+
+/// Argument: threads. 500 CFD steps (0.05 s) from the cached fluidized state; the
+/// renumbering and the inputs (the solver's coupling) are not timed.
+void BM_FluidizedBed(benchmark::State& state)
+{
+    const int threads = static_cast<int>(state.range(0));
+    auto sim = fluidizedBed(threads);
+    const std::size_t n = sim->size();
+    const std::int64_t builds0 = sim->neighbourListBuilds();
+    const std::int64_t steps0 = sim->stepCount();
+    long k = 0;
+    std::size_t contacts = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        if (k % sortEvery == 0) sim->sortByCell();
+        setGas(*sim);
+        state.ResumeTiming();
+        sim->advance(dtCfd);
+        contacts += sim->contactCount();
+        ++k;
+    }
+    const double steps = static_cast<double>(sim->stepCount() - steps0);
+    state.counters["particle_steps_per_s"] =
+        benchmark::Counter(static_cast<double>(n) * steps, benchmark::Counter::kIsRate);
+    state.counters["steps_per_list_build"] =
+        steps / static_cast<double>(std::max<std::int64_t>(1, sim->neighbourListBuilds() - builds0));
+    state.counters["contacts_per_particle"] =
+        static_cast<double>(contacts) / static_cast<double>(std::max(1L, k)) / static_cast<double>(n);
+}
+
+} // namespace
+
+BENCHMARK(BM_FluidizedBed)
+    ->ArgNames({"threads"})
+    ->Arg(1)->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(500)
+    ->UseRealTime();
