@@ -478,7 +478,12 @@ void Foam::dpmCloud::interpolateGas
     {
         addPressureGradientForce(p_rgh);
     }
+    // The boundary values too: the pressure equation takes the explicit
+    // force Kc U* - Fp on the distributor face (constrainPressure); with U*
+    // left 0 there it counted half the bottom row's drag a second time in
+    // the distributor's pressure (docs/model.md, "The gas-side excess")
     Ustar_.primitiveFieldRef() = Uc;
+    Ustar_.correctBoundaryConditions();
 }
 
 
