@@ -1,14 +1,19 @@
 #!/bin/bash
-# Unit checks of the coupling library (Test-dpmCoupling, built by Allwmake)
-# on the paper's 20 x 120 mesh; each check states its source and tolerance.
+# Unit checks of the coupling library on the paper's 20 x 120 mesh; each
+# check states its source and tolerance.
+#   unit.sh <workDir> [application]   default Test-dpmCoupling; also
+#   Test-sphereColumnOverlap (the slab mode's sphere-column volume against
+#   textbook limits, an independent quadrature and Monte Carlo). Both are
+#   built by Allwmake.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
+app="${2:-Test-dpmCoupling}"
 
 cp -r "$testsDir/smoke/blockMeshCase" "$workDir/case" || fail "copy"
 cd "$workDir/case" || fail "cd"
 blockMesh >log.blockMesh 2>&1 || fail "blockMesh"
-"$DPMFOAM2D_BUILD/tests/bin/Test-dpmCoupling" 2>&1 | tee log.Test-dpmCoupling
-[ "${PIPESTATUS[0]}" = 0 ] || fail "coupling checks"
+"$DPMFOAM2D_BUILD/tests/bin/$app" 2>&1 | tee "log.$app"
+[ "${PIPESTATUS[0]}" = 0 ] || fail "$app checks"
 # The exit status alone is not enough: the binary was seen to exit 0 with a
 # failed check (its return value lost at exit), so read its summary too
-grep -Eq '^[0-9]+ passed, 0 failed$' log.Test-dpmCoupling || fail "coupling checks"
-pass "coupling library checks"
+grep -Eq '^[0-9]+ passed, 0 failed$' "log.$app" || fail "$app checks"
+pass "$app checks"
