@@ -64,6 +64,7 @@ int main(int argc, char *argv[])
     #include "createControl.H"
     #include "createFields.H"
     #include "createInletVelocity.H"
+    #include "readFaceMomentum.H"
 
     // The initial state: the restart state, the voidage and the first
     // particle file
@@ -109,11 +110,23 @@ int main(int argc, char *argv[])
         timers.start();
         while (pimple.loop())
         {
-            #include "UEqn.H"
-
-            while (pimple.correct())
+            if (faceMomentum)
             {
-                #include "pEqn.H"
+                #include "pUf/UEqn.H"
+
+                while (pimple.correct())
+                {
+                    #include "pUf/pEqn.H"
+                }
+            }
+            else
+            {
+                #include "pU/UEqn.H"
+
+                while (pimple.correct())
+                {
+                    #include "pU/pEqn.H"
+                }
             }
         }
         timers.stop(solverTimers::gas);

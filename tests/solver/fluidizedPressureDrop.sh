@@ -38,6 +38,7 @@ setEntry constant/particleProperties classes.large.count 260
 setEntry system/controlDict endTime 2
 setEntry system/controlDict writeInterval 0.5
 setFormulation
+setMomentum
 cat >>system/controlDict <<'EOF2'
 functions
 {

@@ -18,6 +18,7 @@ setEntry constant/gasProperties inletPatch none
 setEntry 0/U boundaryField.inlet "{ type noSlip; }"
 setEntry constant/particleProperties frozen true
 setFormulation "${2:-}"
+setMomentum
 setEntry system/controlDict endTime 0.1
 setEntry system/controlDict writeInterval 0.1
 runSolver

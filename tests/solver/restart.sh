@@ -16,6 +16,7 @@ setEntry system/controlDict endTime 0.02
 setEntry system/controlDict writeInterval 0.01
 setEntry constant/gasProperties U0byUmf 2
 setEntry constant/particleProperties dragModel "$model"
+setMomentum
 cd .. && cp -r once twice || fail "copy"
 
 (cd once && runSolver)

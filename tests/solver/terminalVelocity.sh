@@ -35,6 +35,7 @@ setEntry constant/particleProperties initialBed "{ positions \"\$FOAM_CASE/posit
 setEntry system/controlDict endTime 0.4
 setEntry system/controlDict writeInterval 0.4
 setFormulation "${2:-}"
+setMomentum
 runSolver
 
 py - <<'PY' || fail "terminal velocity"

@@ -20,6 +20,7 @@ setEntry system/controlDict writeInterval 0.02
 setEntry constant/gasProperties U0byUmf 2
 setEntry constant/particleProperties nThreads 1
 setEntry constant/particleProperties dragModel "$model"
+setMomentum
 cd .. && cp -r one two || fail "copy"
 (cd two && setEntry constant/particleProperties nThreads 2)
 
