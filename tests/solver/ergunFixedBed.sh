@@ -22,9 +22,13 @@
 # gas carries eps_g grad p and the drag is eps_g K_B, eps_g = 1 - phiP.
 #
 # In B, the same steady state also checks the gas's momentum over the whole
-# column: the distributor's p_rgh times the cross-section equals the force
+# column: the distributor's p_rgh times the cross-section equals the drag
 # the particles feel (Newton's third law; inlet and outlet carry the same
 # momentum flux, the walls' viscous shear is 1e-4 of it). Tolerance 0.5 %.
+# The drag is their force less the buoyancy rho_g V_p g, which p_rgh (the
+# pressure less the gas's head) does not carry: 0.18 % of the force in the
+# 2D bed, inside the tolerance, but 1.2 % in the 5-mm slab, where the check
+# against the whole force failed (-1.06 %).
 # It failed by 2.5 % while the explicit force's boundary values (Ustar) were
 # never updated: the distributor face then counted half of the bottom row's
 # drag a second time (docs/model.md, "The gas-side excess").
@@ -87,11 +91,6 @@ print(f"$voidageModel depth {$depth*1e3:.3f} mm: voidage {eps:.4f}, Us {Us:.4f} 
 sys.exit(0 if err < 0.03 else 1)
 PY
 
-# The slab's figure is printed, not checked: at 5 mm the distributor's
-# p_rgh A falls 1.06 % short of the force (3 mm: 0.43 %) while the bed's
-# gradient matches Ergun to 0.02 % (docs/model.md, "The slab mode"; open)
-check=1
-[ "$voidageModel" = slab3D ] && check=0
 if [ "$formulation" = B ]
 then
     py - <<PY || fail "distributor pressure against the force on the particles"
@@ -103,10 +102,15 @@ field = open("0.02/p_rgh").read()
 inlet = re.search(r"inlet\\s*\\{[^}]*?value\\s+nonuniform List<scalar>\\s*\\d+\\(([^)]*)\\)", field)
 p = np.array(inlet.group(1).split(), dtype=float).mean()
 area = 8 * 7.5e-3 * $depth
-err = (p * area - force) / force
+# p_rgh leaves out the gas's hydrostatic head, so it carries the drag only:
+# the buoyancy reaction in the gas's source cancels its -rho phiP g term
+buoyancy = 720 * 1.204 * np.pi * $d**3 / 6 * 9.81
+drag = force - buoyancy
+err = (p * area - drag) / drag
 print(f"distributor p_rgh {p:.3f} Pa x area {area:.4e} m2 = {p*area:.6f} N, "
-      f"force on particles {force:.6f} N, difference {100*err:+.3f} %")
-sys.exit(0 if abs(err) < 0.005 or not $check else 1)
+      f"force on particles {force:.6f} N less their buoyancy {buoyancy:.3e} N "
+      f"= drag {drag:.6f} N, difference {100*err:+.3f} %")
+sys.exit(0 if abs(err) < 0.005 else 1)
 PY
 fi
 pass "fixed bed follows Ergun"
