@@ -8,7 +8,10 @@
 # order 1 m/s: |p_rgh| < 1e-6 rho_g g H and |U| < 1e-6 m/s after 0.1 s.
 # In formulation A the gas carries no buoyancy reaction and no weight term
 # (-eps_g grad p + rho eps_g g = -eps_g grad p_rgh): the same state.
-#   hydrostatics.sh <workDir> [A|B]    (default B)
+# In the slab mode (voidageModel slab3D, the mesh as thick as the slab) the
+# same holds with the spheres' volume fraction as the voidage.
+#   hydrostatics.sh <workDir> [A|B] [discs2D | slab3D <depth>]
+#                                      (default B discs2D)
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 
@@ -19,6 +22,12 @@ setEntry 0/U boundaryField.inlet "{ type noSlip; }"
 setEntry constant/particleProperties frozen true
 setFormulation "${2:-}"
 setMomentum
+setVoidageModel "${3:-}"
+if [ "$voidageModel" = slab3D ]
+then
+    setEntry system/bedGeometry depth "${4:?slab3D needs the slab depth}"
+    blockMesh >log.blockMesh 2>&1 || fail "blockMesh"
+fi
 setEntry system/controlDict endTime 0.1
 setEntry system/controlDict writeInterval 0.1
 runSolver

@@ -1,6 +1,5 @@
 #include "dpmCloud.H"
 #include "gasProperties.H"
-#include "fluidization.H"
 #include "positiveEntry.H"
 #include "caseChecks.H"
 #include "solidsMixture.H"
@@ -218,20 +217,13 @@ Foam::dpmCloud::dpmCloud
     ),
     writeInterval_(positiveEntry(dict_, "writeInterval", 0.01)),
     voidageMin_(boundedEntryOrDefault(dict_, "voidageMin", 0.1, 0, 1, true)),
-    overlapCount_(),
+    voidageModel_(voidageModel::New(dict_, grid_, voidageMin_)),
     voidage_
     (
         fieldIO("voidage", mesh, mode == startMode::run),
         mesh,
         dimensionedScalar("one", dimless, 1.0),
         voidagePatchTypes(mesh, gas.inletPatch())
-    ),
-    porosity2D_
-    (
-        fieldIO("porosity2D", mesh, false),
-        mesh,
-        dimensionedScalar("one", dimless, 1.0),
-        zeroGradientFvPatchScalarField::typeName
     ),
     particleFraction_
     (
@@ -264,6 +256,7 @@ Foam::dpmCloud::dpmCloud
     )
 {
     Info<< "Coupling: " << formulationDescription(formulation_).c_str()
+        << nl << "Coupling: " << voidageModel_->description().c_str()
         << endl;
 
     if (classNames_.size() < 1)
@@ -284,6 +277,7 @@ Foam::dpmCloud::dpmCloud
         [&]{ dem_.reset(new dem::Simulation(settings)); }
     );
     checkSettings(gas, mode);
+    voidageModel_->checkDiameters(dict_, classDiameters());
 
     subSteps();         // the DEM step must divide the CFD step
     warnThinSlab();
@@ -529,8 +523,8 @@ Foam::vector Foam::dpmCloud::fluidForce(const label i) const
 
 void Foam::dpmCloud::mapToGas()
 {
-    // The reaction on the gas, shared by the cells as the particle's area
-    // was at the start of the step, where the gas was interpolated
+    // The reaction on the gas, shared by the cells as the particle was at
+    // the start of the step, where the gas was interpolated
     const label n = size();
     const scalar Vc = grid_.cellVolume();
     scalarField& Kc = Kc_.primitiveFieldRef();
@@ -543,14 +537,17 @@ void Foam::dpmCloud::mapToGas()
         formulation_ == couplingFormulation::B && !frozen_;
     const double* FX = dem_->meanFluidForceX();
     const double* FY = dem_->meanFluidForceY();
+    const labelList& counts = voidageModel_->counts();
+    const labelList& cells = voidageModel_->cells();
+    const scalarList& fractions = voidageModel_->fractions();
     for (label i = 0; i < n; ++i)
     {
         const vector F =
             meanForce ? vector(FX[i], FY[i], 0) : exchangedForce(i);
-        for (label k = 4*i; k < 4*i + overlapCount_[i]; ++k)
+        for (label k = 4*i; k < 4*i + counts[i]; ++k)
         {
-            const label c = overlapCells_[k];
-            const scalar f = overlapFraction_[k]/Vc;
+            const label c = cells[k];
+            const scalar f = fractions[k]/Vc;
             Kc[c] += f*K_[i];
             Fp[c] += f*F;
         }
@@ -564,70 +561,22 @@ void Foam::dpmCloud::mapToGas()
 
 void Foam::dpmCloud::updateOverlaps()
 {
-    const label n = size();
-    const double* x = dem_->x();
-    const double* y = dem_->y();
-    const double* d = dem_->diameter();
-
-    // Particle by particle on the DEM's threads (the costly part: segment
-    // areas); updateVoidage sums them into the cells in particle order, so
-    // the voidage does not depend on the thread count
-    overlapCount_.setSize(n);
-    overlapCells_.setSize(4*n);
-    overlapFraction_.setSize(4*n);
-    #pragma omp parallel for num_threads(dem_->settings().nThreads) schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        const scalar r = 0.5*d[i];
-        const scalar discArea = constant::mathematical::pi*r*r;
-        label count = 0;
-        grid_.forEachDiscOverlap
-        (
-            x[i], y[i], r,
-            [&](const label c, const scalar area)
-            {
-                overlapCells_[4*i + count] = c;
-                overlapFraction_[4*i + count] = area/discArea;
-                ++count;
-            }
-        );
-        overlapCount_[i] = count;
-    }
+    voidageModel_->updateOverlaps
+    (
+        size(), dem_->x(), dem_->y(), dem_->diameter(),
+        dem_->settings().nThreads
+    );
 }
 
 
 void Foam::dpmCloud::updateVoidage()
 {
     updateOverlaps();
-
-    const label n = size();
-    const scalar cellArea = grid_.dx()*grid_.dy();
-    const scalar Vc = grid_.cellVolume();
-    const double* d = dem_->diameter();
-
-    scalarField& porosity = porosity2D_.primitiveFieldRef();
-    scalarField& phiP = particleFraction_.primitiveFieldRef();
-    porosity = 1;
-    phiP = 0;
-    for (label i = 0; i < n; ++i)
-    {
-        const scalar r = 0.5*d[i];
-        const scalar discArea = constant::mathematical::pi*r*r;
-        const scalar VpByVc = discArea*4*r/(3*Vc);
-        for (label k = 4*i; k < 4*i + overlapCount_[i]; ++k)
-        {
-            const label c = overlapCells_[k];
-            porosity[c] -= overlapFraction_[k]*discArea/cellArea;
-            phiP[c] += VpByVc*overlapFraction_[k];
-        }
-    }
-
-    scalarField& eps = voidage_.primitiveFieldRef();
-    forAll(eps, c)
-    {
-        eps[c] = max(fluidization::voidage3D(porosity[c]), voidageMin_);
-    }
-    porosity2D_.correctBoundaryConditions();
+    voidageModel_->updateFields
+    (
+        size(), dem_->diameter(),
+        voidage_.primitiveFieldRef(), particleFraction_.primitiveFieldRef()
+    );
     particleFraction_.correctBoundaryConditions();
     voidage_.correctBoundaryConditions();
 
@@ -656,12 +605,14 @@ void Foam::dpmCloud::updateMixture()
     fractionByDiameter_ = 0;
 
     // The same shares as particleFraction_ in updateVoidage
+    const labelList& counts = voidageModel_->counts();
+    const labelList& cells = voidageModel_->cells();
+    const scalarList& fractions = voidageModel_->fractions();
     for (label i = 0; i < n; ++i)
     {
         solidsMixture::addParticle
         (
-            d[i], cls[i], overlapCount_[i],
-            &overlapCells_[4*i], &overlapFraction_[4*i], Vc,
+            d[i], cls[i], counts[i], &cells[4*i], &fractions[4*i], Vc,
             classFraction_, fractionByDiameter_
         );
     }
@@ -717,21 +668,18 @@ void Foam::dpmCloud::writeParticles()
 void Foam::dpmCloud::reportBalance(Ostream& os) const
 {
     vector particleForce = Zero;
-    scalar particleArea = 0;
     for (label i = 0; i < size(); ++i)
     {
         if (K_.size() == size()) particleForce += exchangedForce(i);
-        const scalar d = dem_->diameter()[i];
-        particleArea += constant::mathematical::pi*d*d/4;
     }
     const vector gasForce = gSum(Fp_.primitiveField())*grid_.cellVolume();
-    const scalar mappedArea =
-        gSum(1 - porosity2D_.primitiveField())*grid_.dx()*grid_.dy();
 
     os  << "Exchange: force on particles " << particleForce
-        << " N, reaction mapped to the gas " << gasForce << " N" << nl
-        << "Exchange: particle area " << particleArea
-        << " m2, mapped to cells " << mappedArea << " m2" << endl;
+        << " N, reaction mapped to the gas " << gasForce << " N" << nl;
+    voidageModel_->reportBalance
+    (
+        os, size(), dem_->diameter(), particleFraction_.primitiveField()
+    );
 }
 
 

@@ -1,0 +1,124 @@
+#include "discs2D.H"
+#include "fluidization.H"
+#include "addToRunTimeSelectionTable.H"
+#include "mathematicalConstants.H"
+
+namespace Foam
+{
+namespace voidageModels
+{
+    defineTypeNameAndDebug(discs2D, 0);
+    addToRunTimeSelectionTable(voidageModel, discs2D, grid);
+}
+}
+
+
+Foam::voidageModels::discs2D::discs2D
+(
+    const cartesianGrid2D& grid,
+    const scalar voidageMin
+)
+:
+    voidageModel(grid, voidageMin)
+{}
+
+
+Foam::string Foam::voidageModels::discs2D::description() const
+{
+    return
+        "voidage model discs2D (the paper's): disc-area fraction of the"
+        " cells, Hoomans' 2D-to-3D map, bounded by voidageMin";
+}
+
+
+void Foam::voidageModels::discs2D::updateOverlaps
+(
+    const label n,
+    const double* x,
+    const double* y,
+    const double* d,
+    const label nThreads
+)
+{
+    // Particle by particle on the DEM's threads (the costly part: segment
+    // areas); updateFields sums them into the cells in particle order
+    counts_.setSize(n);
+    cells_.setSize(4*n);
+    fractions_.setSize(4*n);
+    #pragma omp parallel for num_threads(nThreads) schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar r = 0.5*d[i];
+        const scalar discArea = constant::mathematical::pi*r*r;
+        label count = 0;
+        grid_.forEachDiscOverlap
+        (
+            x[i], y[i], r,
+            [&](const label c, const scalar area)
+            {
+                cells_[4*i + count] = c;
+                fractions_[4*i + count] = area/discArea;
+                ++count;
+            }
+        );
+        counts_[i] = count;
+    }
+}
+
+
+void Foam::voidageModels::discs2D::updateFields
+(
+    const label n,
+    const double* d,
+    scalarField& voidage,
+    scalarField& phiP
+)
+{
+    const scalar cellArea = grid_.dx()*grid_.dy();
+    const scalar Vc = grid_.cellVolume();
+
+    porosity2D_.setSize(voidage.size());
+    porosity2D_ = 1;
+    phiP = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar r = 0.5*d[i];
+        const scalar discArea = constant::mathematical::pi*r*r;
+        const scalar VpByVc = discArea*4*r/(3*Vc);
+        for (label k = 4*i; k < 4*i + counts_[i]; ++k)
+        {
+            const label c = cells_[k];
+            porosity2D_[c] -= fractions_[k]*discArea/cellArea;
+            phiP[c] += VpByVc*fractions_[k];
+        }
+    }
+
+    forAll(voidage, c)
+    {
+        voidage[c] =
+            max(fluidization::voidage3D(porosity2D_[c]), voidageMin_);
+    }
+}
+
+
+void Foam::voidageModels::discs2D::reportBalance
+(
+    Ostream& os,
+    const label n,
+    const double* d,
+    const scalarField&
+) const
+{
+    scalar particleArea = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        particleArea += constant::mathematical::pi*d[i]*d[i]/4;
+    }
+    const scalar mappedArea = gSum(1 - porosity2D_)*grid_.dx()*grid_.dy();
+
+    os  << "Exchange: particle area " << particleArea
+        << " m2, mapped to cells " << mappedArea << " m2" << endl;
+}
+
+
+// ************************************************************************* //
