@@ -93,8 +93,10 @@ sys.exit(0 if err < 0.03 else 1)
 PY
 
 # The bed's end rows. Continuity fixes the gas's mean velocity in every row
-# of cells: U0/eps in the bed, U0 in the freeboard; and the pressure from the distributor to
-# row 8 (the bed but its top row) follows Ergun over 8.5 rows. The cell-
+# of cells: U0/eps in the bed, U0 in the freeboard; and the pressure from
+# the distributor to row 8 (the bed but its top row) is Ergun's over 8.5
+# rows plus the gas's acceleration into the bed, rho (U0^2/eps^2 - U0^2)/2
+# (0.4 % of it in the 2D bed, 1.2 % in the 5-mm slab). The cell-
 # centred momentum (faceMomentum no) rebuilt the end rows' gas at 0.61 and
 # 0.71 of the interior speed (the freeboard's at 0.4-1.3 U0) and lost half
 # of the bottom row's drop (docs/model.md, "The bed's end cells").
@@ -121,10 +123,11 @@ rows = internal_field("0.02/p_rgh").reshape(40, 8).mean(axis=1)
 field = open("0.02/p_rgh").read()
 inlet = re.search(r"inlet\\s*\\{[^}]*?value\\s+nonuniform List<scalar>\\s*\\d+\\(([^)]*)\\)", field)
 p = np.array(inlet.group(1).split(), dtype=float).mean()
-lower = (p - rows[8]) / (ergun * 8.5 * dy) - 1
+acceleration = rho / 2 * ((Us / eps)**2 - Us**2)
+lower = (p - rows[8]) / (ergun * 8.5 * dy + acceleration) - 1
 whole = p / (ergun * 10 * dy) - 1
 print(f"mean gas velocity of every row against continuity: worst {100*uErr:.3f} %; "
-      f"distributor to row 8 against Ergun: {100*lower:+.2f} %; "
+      f"distributor to row 8 against Ergun and the acceleration: {100*lower:+.2f} %; "
       f"whole bed (printed only): {100*whole:+.2f} %")
 sys.exit(0 if uErr < 1e-3 and abs(lower) < 0.01 else 1)
 PY
