@@ -48,6 +48,14 @@ using PairForce = PairForceT<2>;
 using PairGeometry3 = PairGeometryT<3>;
 using PairForce3 = PairForceT<3>;
 
+/// Normal force magnitude kn delta + etaN vn (vn > 0 approaching); F_n = -fn nHat on i.
+/// No clamp of the tensile part near the end of the contact: the exact restitution of
+/// eta_n(e) assumes the unclamped law.
+inline double normalForce(double overlap, double vn, const ContactLaw& law)
+{
+    return law.kn * overlap + law.etaN * vn;
+}
+
 /// Linear spring-dashpot with Coulomb friction (model.md section 3).
 ///
 /// The tangential spring lives in the tangent plane of the contact. In 3D the stored
@@ -63,18 +71,17 @@ using PairForce3 = PairForceT<3>;
 template <int Dim>
 inline PairForceT<Dim> contactForce(const PairGeometryT<Dim>& g, const ContactLaw& law, double dt)
 {
-    const double vn = g.vRel.dot(g.nHat);     // > 0 approaching
-    // Normal: F_n = -(kn delta + etaN vn) nHat on i. No clamp of the tensile part near the
-    // end of the contact: the exact restitution of eta_n(e) assumes the unclamped law.
-    const double fn = law.kn * g.overlap + law.etaN * vn;
-    const double limit = law.mu * std::abs(fn);
-
     PairForceT<Dim> out;
     if constexpr (Dim == 2) {
+        // The order of the operations of the 2D code before the 3D mode, so that the
+        // compiler emits the same instructions.
         const Eigen::Vector2d tHat(-g.nHat.y(), g.nHat.x());
+        const double vn = g.vRel.dot(g.nHat);     // > 0 approaching
         const double vt = g.vRel.dot(tHat);
+        const double fn = normalForce(g.overlap, vn, law);
         double xiT = g.xiT + vt * dt;
         double ft = -law.kt * xiT - law.etaT * vt;
+        const double limit = law.mu * std::abs(fn);
         if (std::abs(ft) > limit) {
             ft = std::copysign(limit, ft);
             xiT = -ft / law.kt;
@@ -86,6 +93,9 @@ inline PairForceT<Dim> contactForce(const PairGeometryT<Dim>& g, const ContactLa
         out.ft = ft;
         out.xiT = xiT;
     } else {
+        const double vn = g.vRel.dot(g.nHat);
+        const double fn = normalForce(g.overlap, vn, law);
+        const double limit = law.mu * std::abs(fn);
         const Eigen::Vector3d vt = g.vRel - vn * g.nHat;
         // Turn the stored displacement into the current tangent plane, keeping its length.
         Eigen::Vector3d xi = g.xiT - g.xiT.dot(g.nHat) * g.nHat;
