@@ -52,8 +52,8 @@ NbsSearch::NbsSearch(double xMin, double xMax, double yMin, double yMax, double 
 }
 
 template <bool Is3D>
-void NbsSearch::walkRows(int first, int last, const double* x, const double* y, const double* z,
-                         const double* r, std::size_t n, double margin, Band& band) const
+void NbsSearch::walkRows(int first, int last, const double* x, const double* y, const double* r,
+                         std::size_t n, double margin, Band& band) const
 {
     const int nColumns = mapper_.nColumns();
     band.headsThisRow.assign(nColumns, -1);
@@ -71,10 +71,8 @@ void NbsSearch::walkRows(int first, int last, const double* x, const double* y, 
         const double reach = r[i] + r[j] + margin;
         double d2 = dx * dx + dy * dy;
         if constexpr (Is3D) {
-            const double dz = z[j] - z[i];
+            const double dz = band.z[j] - band.z[i];
             d2 += dz * dz;
-        } else {
-            (void)z;
         }
         if (d2 < reach * reach) {
             pairs.push_back(i < j ? IndexPair{i, j} : IndexPair{j, i});
@@ -155,7 +153,8 @@ void NbsSearch::find(const double* x, const double* y, const double* z, const do
 
 #pragma omp parallel for num_threads(nBands) schedule(static, 1)
     for (int b = 0; b < nBands; ++b) {
-        walkRows<Is3D>(bandStart[b], bandStart[b + 1], x, y, z, r, n, margin, bands_[b]);
+        bands_[b].z = z;
+        walkRows<Is3D>(bandStart[b], bandStart[b + 1], x, y, r, n, margin, bands_[b]);
     }
 
     pairs.clear();

@@ -44,12 +44,13 @@ private:
     struct Band {
         std::vector<int> headsThisRow, headsRowBelow, columnNext;
         std::vector<IndexPair> pairs;
+        const double* z = nullptr;   ///< z of the particles in a 3D search
     };
     /// Pairs of rows [first, last) into band.pairs (row first - 1 is linked as the row below).
-    /// z == nullptr in 2D (Is3D false).
+    /// In 3D (Is3D) z comes in band.z, so that the 2D walk keeps its arguments and its code.
     template <bool Is3D>
-    void walkRows(int first, int last, const double* x, const double* y, const double* z,
-                  const double* r, std::size_t n, double margin, Band& band) const;
+    void walkRows(int first, int last, const double* x, const double* y, const double* r,
+                  std::size_t n, double margin, Band& band) const;
     template <bool Is3D>
     void find(const double* x, const double* y, const double* z, const double* r, std::size_t n,
               double margin, std::vector<IndexPair>& pairs, int nThreads);
