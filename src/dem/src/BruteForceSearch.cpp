@@ -18,4 +18,21 @@ void bruteForcePairs(const double* x, const double* y, const double* r, std::siz
     }
 }
 
+void bruteForcePairs(const double* x, const double* y, const double* z, const double* r,
+                     std::size_t n, double margin, std::vector<IndexPair>& pairs)
+{
+    pairs.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = i + 1; j < n; ++j) {
+            const double dx = x[j] - x[i];
+            const double dy = y[j] - y[i];
+            const double dz = z[j] - z[i];
+            const double reach = r[i] + r[j] + margin;
+            if (dx * dx + dy * dy + dz * dz < reach * reach) {
+                pairs.push_back({static_cast<int>(i), static_cast<int>(j)});
+            }
+        }
+    }
+}
+
 } // namespace dem

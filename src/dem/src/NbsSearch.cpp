@@ -51,8 +51,9 @@ NbsSearch::NbsSearch(double xMin, double xMax, double yMin, double yMax, double 
 {
 }
 
-void NbsSearch::walkRows(int first, int last, const double* x, const double* y,
-                         const double* r, std::size_t n, double margin, Band& band) const
+template <bool Is3D>
+void NbsSearch::walkRows(int first, int last, const double* x, const double* y, const double* r,
+                         std::size_t n, double margin, Band& band) const
 {
     const int nColumns = mapper_.nColumns();
     band.headsThisRow.assign(nColumns, -1);
@@ -68,7 +69,12 @@ void NbsSearch::walkRows(int first, int last, const double* x, const double* y,
         const double dx = x[j] - x[i];
         const double dy = y[j] - y[i];
         const double reach = r[i] + r[j] + margin;
-        if (dx * dx + dy * dy < reach * reach) {
+        double d2 = dx * dx + dy * dy;
+        if constexpr (Is3D) {
+            const double dz = band.z[j] - band.z[i];
+            d2 += dz * dz;
+        }
+        if (d2 < reach * reach) {
             pairs.push_back(i < j ? IndexPair{i, j} : IndexPair{j, i});
         }
     };
@@ -112,6 +118,20 @@ void NbsSearch::walkRows(int first, int last, const double* x, const double* y,
 void NbsSearch::findPairs(const double* x, const double* y, const double* r, std::size_t n,
                           double margin, std::vector<IndexPair>& pairs, int nThreads)
 {
+    find<false>(x, y, nullptr, r, n, margin, pairs, nThreads);
+}
+
+void NbsSearch::findPairs(const double* x, const double* y, const double* z, const double* r,
+                          std::size_t n, double margin, std::vector<IndexPair>& pairs,
+                          int nThreads)
+{
+    find<true>(x, y, z, r, n, margin, pairs, nThreads);
+}
+
+template <bool Is3D>
+void NbsSearch::find(const double* x, const double* y, const double* z, const double* r,
+                     std::size_t n, double margin, std::vector<IndexPair>& pairs, int nThreads)
+{
     mapper_.linkRows(y, n);
     const int nRows = mapper_.nRows();
     const int nBands = std::max(1, nThreads);
@@ -133,7 +153,8 @@ void NbsSearch::findPairs(const double* x, const double* y, const double* r, std
 
 #pragma omp parallel for num_threads(nBands) schedule(static, 1)
     for (int b = 0; b < nBands; ++b) {
-        walkRows(bandStart[b], bandStart[b + 1], x, y, r, n, margin, bands_[b]);
+        bands_[b].z = z;
+        walkRows<Is3D>(bandStart[b], bandStart[b + 1], x, y, r, n, margin, bands_[b]);
     }
 
     pairs.clear();

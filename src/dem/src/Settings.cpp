@@ -1,5 +1,6 @@
 #include "dem/System.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -100,6 +101,20 @@ void validateSettings(const Settings& s)
     if (std::isnan(s.neighbourSkin) || std::isinf(s.neighbourSkin)) {
         throw Error("neighbourSkin = " + formatValue(s.neighbourSkin)
                     + " is outside [0, inf) (or < 0 for 0.1 x smallest diameter)");
+    }
+
+    if (s.dimension != 2 && s.dimension != 3) {
+        throw Error("dimension = " + std::to_string(s.dimension)
+                    + " is outside {2, 3} (2: discs in a plane, 3: spheres in a slab)");
+    }
+    if (s.dimension == 3) {
+        double dMax = 0.0;
+        for (const auto& c : s.classes) dMax = std::max(dMax, c.diameter);
+        if (!(s.slabDepth >= dMax) || !std::isfinite(s.slabDepth)) {
+            throw Error("slabDepth = " + formatValue(s.slabDepth) + " m is outside ["
+                        + formatValue(dMax) + ", inf): the slab (dimension 3) must hold the "
+                        "largest diameter");
+        }
     }
 
     requirePositive(s.dt, "dt");

@@ -30,6 +30,11 @@ double resolvedSkin(const Settings& s)
 const Settings& validated(const Settings& s)
 {
     validateSettings(s);
+    if (s.dimension != 2) {
+        throw Error("dimension = " + std::to_string(s.dimension) + " is outside {2}: the 2D "
+                    "engine runs discs in a plane; the slab (dimension 3) runs in dem::SlabSystem, "
+                    "which dem::Simulation does not serve yet");
+    }
     return s;
 }
 

@@ -1,67 +1,121 @@
 #pragma once
-// The pair-force arithmetic, shared by particle-particle and particle-wall contacts.
-// Stateless: geometry and stored history in, force, torques and new history out.
+// The pair-force arithmetic, shared by particle-particle and particle-wall contacts and by
+// the 2D mode (discs in the x-y plane) and the slab mode (3D spheres), templated on the
+// dimension. Stateless: geometry and stored history in, force, torques and new history out.
 
 #include "dem/ContactLaw.hpp"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>   // cross products of the 3D kernel
 #include <cmath>
+#include <type_traits>
 
 namespace dem {
 
+/// Types of one dimension: in 2D spin, torque and the tangential history are scalars (about
+/// z, along tHat = ez x nHat); in 3D they are 3-vectors.
+template <int Dim> struct ContactTypes {
+    static_assert(Dim == 2 || Dim == 3, "the DEM runs in 2D or 3D");
+    using Vector = Eigen::Matrix<double, Dim, 1>;
+    using Rotational = std::conditional_t<Dim == 2, double, Eigen::Vector3d>;
+};
+
 /// Geometry and kinematics of one contact, seen from particle i.
-struct PairGeometry {
+template <int Dim> struct PairGeometryT {
+    using Vector = typename ContactTypes<Dim>::Vector;
+    using Rotational = typename ContactTypes<Dim>::Rotational;
     double overlap;          ///< r_i + r_j - |x_j - x_i| (or r_i - distance to the wall), m, > 0
-    Eigen::Vector2d nHat;    ///< unit normal from i towards j (or towards the wall)
-    Eigen::Vector2d vRel;    ///< velocity of i's contact point relative to j's, m/s
+    Vector nHat;             ///< unit normal from i towards j (or towards the wall)
+    Vector vRel;             ///< velocity of i's contact point relative to j's, m/s
     double rI;               ///< lever arm of i, m
     double rJ;               ///< lever arm of j, m (0 for a wall)
-    double xiT;              ///< stored tangential spring displacement along tHat, m (contact history)
+    Rotational xiT;          ///< stored tangential spring displacement (2D: along tHat), m
 };
 
 /// Result of one contact evaluation.
-struct PairForce {
-    Eigen::Vector2d force;   ///< on i (j receives -force), N
-    double torqueI;          ///< about z on i, N m
-    double torqueJ;          ///< about z on j, N m
-    double ft;               ///< tangential force along tHat on i, N
-    double xiT;              ///< updated tangential displacement, m
+template <int Dim> struct PairForceT {
+    using Vector = typename ContactTypes<Dim>::Vector;
+    using Rotational = typename ContactTypes<Dim>::Rotational;
+    Vector force;            ///< on i (j receives -force), N
+    Rotational torqueI;      ///< on i, N m (2D: about z)
+    Rotational torqueJ;      ///< on j, N m
+    Rotational ft;           ///< tangential force on i (2D: along tHat), N
+    Rotational xiT;          ///< updated tangential displacement, m
 };
+
+using PairGeometry = PairGeometryT<2>;
+using PairForce = PairForceT<2>;
+using PairGeometry3 = PairGeometryT<3>;
+using PairForce3 = PairForceT<3>;
+
+/// Normal force magnitude kn delta + etaN vn (vn > 0 approaching); F_n = -fn nHat on i.
+/// No clamp of the tensile part near the end of the contact: the exact restitution of
+/// eta_n(e) assumes the unclamped law.
+inline double normalForce(double overlap, double vn, const ContactLaw& law)
+{
+    return law.kn * overlap + law.etaN * vn;
+}
 
 /// Linear spring-dashpot with Coulomb friction (model.md section 3).
 ///
-/// In the plane the tangent "plane" of a contact is the line tHat = ez x nHat. The history
-/// is stored as the scalar component along tHat, so it turns with the contact normal, which
-/// is what rotating the stored displacement into the current tangent plane does in 3D.
+/// The tangential spring lives in the tangent plane of the contact. In 3D the stored
+/// displacement is first turned into the current tangent plane (its component along nHat
+/// removed, its length kept), then the tangential relative displacement of the step is
+/// added. In 2D the tangent "plane" is the line tHat = ez x nHat and the history is the
+/// scalar component along tHat, so it turns with the normal by construction.
 /// When the trial force (spring + dashpot) exceeds mu |Fn| the contact slides: the force is
 /// set to the limit and the stored displacement is reset so that the spring alone carries it,
-/// xiT = -Ft/kt. Dashpot velocity is the one passed in vRel. dt = 0 evaluates without
-/// accumulating history.
-inline PairForce contactForce(const PairGeometry& g, const ContactLaw& law, double dt)
+/// xi = -Ft/kt. Dashpot velocity is the one passed in vRel. dt = 0 evaluates without
+/// accumulating history. Torques: (r_i nHat) x Ft on i and (r_j nHat) x Ft on j (its lever
+/// arm -r_j nHat times its force -Ft).
+template <int Dim>
+inline PairForceT<Dim> contactForce(const PairGeometryT<Dim>& g, const ContactLaw& law, double dt)
 {
-    const Eigen::Vector2d tHat(-g.nHat.y(), g.nHat.x());
-    const double vn = g.vRel.dot(g.nHat);     // > 0 approaching
-    const double vt = g.vRel.dot(tHat);
-
-    // Normal: F_n = -(kn delta + etaN vn) nHat on i. No clamp of the tensile part near the
-    // end of the contact: the exact restitution of eta_n(e) assumes the unclamped law.
-    const double fn = law.kn * g.overlap + law.etaN * vn;
-
-    double xiT = g.xiT + vt * dt;
-    double ft = -law.kt * xiT - law.etaT * vt;
-    const double limit = law.mu * std::abs(fn);
-    if (std::abs(ft) > limit) {
-        ft = std::copysign(limit, ft);
-        xiT = -ft / law.kt;
+    PairForceT<Dim> out;
+    if constexpr (Dim == 2) {
+        // The order of the operations of the 2D code before the 3D mode, so that the
+        // compiler emits the same instructions.
+        const Eigen::Vector2d tHat(-g.nHat.y(), g.nHat.x());
+        const double vn = g.vRel.dot(g.nHat);     // > 0 approaching
+        const double vt = g.vRel.dot(tHat);
+        const double fn = normalForce(g.overlap, vn, law);
+        double xiT = g.xiT + vt * dt;
+        double ft = -law.kt * xiT - law.etaT * vt;
+        const double limit = law.mu * std::abs(fn);
+        if (std::abs(ft) > limit) {
+            ft = std::copysign(limit, ft);
+            xiT = -ft / law.kt;
+        }
+        out.force = -fn * g.nHat + ft * tHat;
+        // T = (r nHat) x (ft tHat) = r ft ez for both partners (nHat x tHat = ez).
+        out.torqueI = g.rI * ft;
+        out.torqueJ = g.rJ * ft;
+        out.ft = ft;
+        out.xiT = xiT;
+    } else {
+        const double vn = g.vRel.dot(g.nHat);
+        const double fn = normalForce(g.overlap, vn, law);
+        const double limit = law.mu * std::abs(fn);
+        const Eigen::Vector3d vt = g.vRel - vn * g.nHat;
+        // Turn the stored displacement into the current tangent plane, keeping its length.
+        Eigen::Vector3d xi = g.xiT - g.xiT.dot(g.nHat) * g.nHat;
+        const double before2 = g.xiT.squaredNorm();
+        const double after2 = xi.squaredNorm();
+        if (after2 > 0.0 && after2 != before2) xi *= std::sqrt(before2 / after2);
+        xi += vt * dt;
+        Eigen::Vector3d ft = -law.kt * xi - law.etaT * vt;
+        const double ft2 = ft.squaredNorm();
+        if (ft2 > limit * limit) {
+            ft *= limit / std::sqrt(ft2);
+            xi = -ft / law.kt;
+        }
+        out.force = -fn * g.nHat + ft;
+        const Eigen::Vector3d nxF = g.nHat.cross(ft);
+        out.torqueI = g.rI * nxF;
+        out.torqueJ = g.rJ * nxF;
+        out.ft = ft;
+        out.xiT = xi;
     }
-
-    PairForce out;
-    out.force = -fn * g.nHat + ft * tHat;
-    // T = (r nHat) x (ft tHat) = r ft ez for both partners (nHat x tHat = ez).
-    out.torqueI = g.rI * ft;
-    out.torqueJ = g.rJ * ft;
-    out.ft = ft;
-    out.xiT = xiT;
     return out;
 }
 

@@ -43,6 +43,12 @@ struct Settings {
     int nThreads = 1;
     /// Verlet skin of the neighbour list built by NBS, m; < 0 means 0.1 x smallest diameter.
     double neighbourSkin = -1.0;
+    /// 2: discs in the x-y plane (the paper's model); 3: spheres in a slab between a front
+    /// wall z = 0 and a back wall z = slabDepth, with the box's walls around (docs/model.md,
+    /// "The slab mode"). Gravity stays in the x-y plane.
+    int dimension = 2;
+    /// Depth of the slab in the 3D mode, m, >= the largest diameter; not used in 2D.
+    double slabDepth = 0.0;
 };
 
 /// How a bed was made: packRandom(countPerClass, region, seed), then settle(settleTime,

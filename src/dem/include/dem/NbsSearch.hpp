@@ -28,6 +28,13 @@ public:
     void findPairs(const double* x, const double* y, const double* r, std::size_t n,
                    double margin, std::vector<IndexPair>& pairs, int nThreads = 1);
 
+    /// The same for spheres in a slab: the cells are columns through the whole depth (the
+    /// slab is a few diameters deep, so a 2D grid in x-y is as fine as a 3D one could be
+    /// where it matters) and a pair is kept by its 3D distance, |x_j - x_i| < r_i + r_j +
+    /// margin. Exact: a pair within reach in 3D is within reach in x-y.
+    void findPairs(const double* x, const double* y, const double* z, const double* r,
+                   std::size_t n, double margin, std::vector<IndexPair>& pairs, int nThreads = 1);
+
     const CellMapper& mapper() const { return mapper_; }
     /// Heap memory of the search arrays, bytes.
     std::size_t memoryBytes() const;
@@ -37,10 +44,16 @@ private:
     struct Band {
         std::vector<int> headsThisRow, headsRowBelow, columnNext;
         std::vector<IndexPair> pairs;
+        const double* z = nullptr;   ///< z of the particles in a 3D search
     };
     /// Pairs of rows [first, last) into band.pairs (row first - 1 is linked as the row below).
+    /// In 3D (Is3D) z comes in band.z, so that the 2D walk keeps its arguments and its code.
+    template <bool Is3D>
     void walkRows(int first, int last, const double* x, const double* y, const double* r,
                   std::size_t n, double margin, Band& band) const;
+    template <bool Is3D>
+    void find(const double* x, const double* y, const double* z, const double* r, std::size_t n,
+              double margin, std::vector<IndexPair>& pairs, int nThreads);
 
     CellMapper mapper_;
     std::vector<Band> bands_;
@@ -51,5 +64,8 @@ private:
 /// ordered by (i, j).
 void bruteForcePairs(const double* x, const double* y, const double* r, std::size_t n,
                      double margin, std::vector<IndexPair>& pairs);
+/// Test oracle in 3D.
+void bruteForcePairs(const double* x, const double* y, const double* z, const double* r,
+                     std::size_t n, double margin, std::vector<IndexPair>& pairs);
 
 } // namespace dem

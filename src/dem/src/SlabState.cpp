@@ -1,0 +1,263 @@
+// The slab's random packing and its state file: everything the next step reads (particles,
+// forces of the last evaluation, the neighbour list in its order with the 3-vector
+// histories, the wall contacts, the reference positions), so a restart continues bit for
+// bit. A file of its own kind: a 2D state and a slab state cannot be mistaken for each other.
+
+#include "dem/Random.hpp"
+#include "dem/SlabSystem.hpp"
+#include "dem/StateRecord.hpp"
+#include "dem/System.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <type_traits>
+
+namespace dem {
+
+namespace {
+
+constexpr char slabMagic[16] = "dpmFoam2D-slab\n";
+constexpr std::uint32_t slabVersion = 1;
+
+std::vector<double> slabKey(const Settings& s)
+{
+    std::vector<double> key = settingsKey(s, 0.0);
+    key.pop_back();   // the skin: a state may continue with another
+    key.push_back(s.slabDepth);
+    return key;
+}
+
+} // namespace
+
+void SlabSystem::packRandom(const std::vector<int>& countPerClass, const Box& region,
+                            std::uint64_t seed)
+{
+    if (static_cast<int>(countPerClass.size()) != nClasses_) {
+        throw Error("countPerClass has " + std::to_string(countPerClass.size())
+                    + " entries, outside [" + std::to_string(nClasses_) + ", "
+                    + std::to_string(nClasses_) + "] (one per size class)");
+    }
+    const Box& b = settings_.box;
+    if (!(region.xMin >= b.xMin && region.xMax <= b.xMax && region.yMin >= b.yMin
+          && region.yMax <= b.yMax && region.xMax > region.xMin && region.yMax > region.yMin)) {
+        throw Error("packing region is outside the box");
+    }
+    double dMax = 0.0;
+    for (const auto& c : settings_.classes) dMax = std::max(dMax, c.diameter);
+
+    // Bins of dMax in x-y through the whole depth (the slab is a few diameters deep).
+    const int nx = std::max(1, static_cast<int>((b.xMax - b.xMin) / dMax));
+    const int ny = std::max(1, static_cast<int>((b.yMax - b.yMin) / dMax));
+    std::vector<std::vector<int>> bins(static_cast<std::size_t>(nx) * ny);
+    auto column = [&](double x) { return std::clamp(static_cast<int>((x - b.xMin) / dMax), 0, nx - 1); };
+    auto row = [&](double y) { return std::clamp(static_cast<int>((y - b.yMin) / dMax), 0, ny - 1); };
+    std::vector<Eigen::Vector3d> pos;
+    std::vector<double> rad;
+    std::vector<int> cls;
+    for (std::size_t k = 0; k < p_.size(); ++k) {
+        bins[row(p_.y[k]) * nx + column(p_.x[k])].push_back(static_cast<int>(pos.size()));
+        pos.push_back(p_.position(k));
+        rad.push_back(p_.radius[k]);
+        cls.push_back(-1);
+    }
+    const std::size_t firstNew = pos.size();
+
+    std::vector<int> order(nClasses_);
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int c) {
+        return settings_.classes[a].diameter > settings_.classes[c].diameter;
+    });
+    Random random(seed);
+    constexpr int maxAttempts = 100000;
+    const double depth = settings_.slabDepth;
+    for (int k : order) {
+        const double r = 0.5 * settings_.classes[k].diameter;
+        for (int count = 0; count < countPerClass[k]; ++count) {
+            bool placed = false;
+            for (int attempt = 0; attempt < maxAttempts && !placed; ++attempt) {
+                const Eigen::Vector3d q(random.uniform(region.xMin + r, region.xMax - r),
+                                        random.uniform(region.yMin + r, region.yMax - r),
+                                        random.uniform(r, depth - r));
+                const int c = column(q.x()), rr = row(q.y());
+                bool blocked = false;
+                for (int y = std::max(0, rr - 1); y <= std::min(ny - 1, rr + 1) && !blocked; ++y) {
+                    for (int x = std::max(0, c - 1); x <= std::min(nx - 1, c + 1) && !blocked; ++x) {
+                        for (int o : bins[y * nx + x]) {
+                            const double reach = rad[o] + r;
+                            if ((pos[o] - q).squaredNorm() < reach * reach) {
+                                blocked = true;
+                                break;
+                            }
+                        }
+                    }
+                }
+                if (blocked) continue;
+                bins[rr * nx + c].push_back(static_cast<int>(pos.size()));
+                pos.push_back(q);
+                rad.push_back(r);
+                cls.push_back(k);
+                placed = true;
+            }
+            if (!placed) {
+                throw Error("packRandom: no room for particle " + std::to_string(count + 1) + " of "
+                            + std::to_string(countPerClass[k]) + " of class '"
+                            + settings_.classes[k].name + "' after " + std::to_string(maxAttempts)
+                            + " attempts; make the packing region larger");
+            }
+        }
+    }
+    // Numbered in horizontal bands bottom to top, as System::packRandom (cache locality).
+    std::vector<std::size_t> rank(pos.size() - firstNew);
+    std::iota(rank.begin(), rank.end(), firstNew);
+    auto band = [&](std::size_t q) { return static_cast<long>((pos[q].y() - region.yMin) / dMax); };
+    std::sort(rank.begin(), rank.end(), [&](std::size_t a, std::size_t c) {
+        if (band(a) != band(c)) return band(a) < band(c);
+        if (pos[a].x() != pos[c].x()) return pos[a].x() < pos[c].x();
+        return a < c;
+    });
+    for (std::size_t q : rank) {
+        p_.append(cls[q], settings_.classes[cls[q]].diameter, settings_.classes[cls[q]].density,
+                  pos[q], Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+    }
+    listValid_ = false;
+    forcesValid_ = false;
+}
+
+void SlabSystem::save(const std::string& path) const
+{
+    namespace fs = std::filesystem;
+    const fs::path parent = fs::path(path).parent_path();
+    std::error_code ec;
+    if (!parent.empty()) fs::create_directories(parent, ec);
+    const std::string tmp = path + ".tmp";
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) throw Error("cannot write slab state file '" + tmp + "': " + std::strerror(errno));
+        auto bytes = [&](const void* data, std::size_t n) {
+            out.write(static_cast<const char*>(data), static_cast<std::streamsize>(n));
+        };
+        auto value = [&](auto v) { bytes(&v, sizeof(v)); };
+        auto array = [&](const auto& a) {
+            value(static_cast<std::uint64_t>(a.size()));
+            bytes(a.data(), a.size() * sizeof(a[0]));
+        };
+        bytes(slabMagic, sizeof(slabMagic));
+        value(slabVersion);
+        array(slabKey(settings_));
+        value(stepCount_);
+        value(listBuilds_);
+        std::vector<double> wallData;
+        for (const PlaneWall3& w : walls_) {
+            wallData.insert(wallData.end(), {w.point.x(), w.point.y(), w.point.z(),
+                                             w.nHat.x(), w.nHat.y(), w.nHat.z()});
+        }
+        array(wallData);
+        p_.forEachArray([&](const auto& a) { array(a); });
+        const std::uint8_t ready = listValid_ && forcesValid_;
+        value(ready);
+        array(pairs_.i); array(pairs_.j); array(pairs_.law); array(pairs_.xi);
+        array(pairs_.groupStart);
+        array(wallContacts_.start); array(wallContacts_.wall); array(wallContacts_.xi);
+        bytes(slabMagic, sizeof(slabMagic));   // end marker
+        out.flush();
+        if (!out) {
+            std::remove(tmp.c_str());
+            throw Error("cannot write slab state file '" + path + "': " + std::strerror(errno));
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        std::remove(tmp.c_str());
+        throw Error("cannot rename '" + tmp + "' to '" + path + "': " + std::strerror(errno));
+    }
+}
+
+void SlabSystem::load(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error("cannot open slab state file '" + path + "': " + std::strerror(errno));
+    auto fail = [&](const std::string& what) {
+        throw Error("slab state file '" + path + "' is not a valid slab state: " + what);
+    };
+    auto bytes = [&](void* to, std::size_t n) {
+        in.read(static_cast<char*>(to), static_cast<std::streamsize>(n));
+        if (!in) fail("it ends early (truncated?)");
+    };
+    auto value = [&](auto& v) { bytes(&v, sizeof(v)); };
+    auto array = [&](auto& a) {
+        std::uint64_t n = 0;
+        value(n);
+        if (n > (std::uint64_t(1) << 34)) fail("an array length of " + std::to_string(n));
+        a.resize(n);
+        bytes(a.data(), n * sizeof(a[0]));
+    };
+    char head[sizeof(slabMagic)];
+    bytes(head, sizeof(head));
+    if (std::memcmp(head, slabMagic, sizeof(slabMagic)) != 0) fail("wrong file type");
+    std::uint32_t version = 0;
+    value(version);
+    if (version != slabVersion) fail("version " + std::to_string(version) + ", expected 1");
+    std::vector<double> key;
+    array(key);
+    const std::vector<double> here = slabKey(settings_);
+    if (key != here) {
+        std::string what = "written with other settings";
+        if (key.size() == here.size() && key.back() != here.back()) {
+            what += " (slabDepth = " + formatValue(key.back()) + " m in the file, "
+                    + formatValue(here.back()) + " m here)";
+        }
+        fail(what);
+    }
+    SlabSystem t(settings_);
+    value(t.stepCount_);
+    value(t.listBuilds_);
+    std::vector<double> wallData;
+    array(wallData);
+    if (wallData.size() % 6 != 0 || wallData.size() < 36) fail("a bad wall list");
+    t.walls_.clear();
+    for (std::size_t k = 0; k < wallData.size(); k += 6) {
+        t.walls_.push_back({Eigen::Vector3d(wallData[k], wallData[k + 1], wallData[k + 2]),
+                            Eigen::Vector3d(wallData[k + 3], wallData[k + 4], wallData[k + 5])});
+    }
+    t.p_.forEachArray([&](auto& a) { array(a); });
+    const std::size_t n = t.p_.size();
+    bool sizesAgree = true;
+    t.p_.forEachArray([&](const auto& a) { sizesAgree = sizesAgree && a.size() == n; });
+    if (!sizesAgree) fail("particle arrays of different lengths");
+    std::uint8_t ready = 0;
+    value(ready);
+    array(t.pairs_.i); array(t.pairs_.j); array(t.pairs_.law); array(t.pairs_.xi);
+    array(t.pairs_.groupStart);
+    array(t.wallContacts_.start); array(t.wallContacts_.wall); array(t.wallContacts_.xi);
+    char tail[sizeof(slabMagic)];
+    bytes(tail, sizeof(tail));
+    if (std::memcmp(tail, slabMagic, sizeof(slabMagic)) != 0) fail("no end marker");
+    const std::size_t np = t.pairs_.i.size();
+    const std::size_t nw = t.wallContacts_.wall.size();
+    bool listOk = t.pairs_.j.size() == np && t.pairs_.law.size() == np && t.pairs_.xi.size() == np
+                  && t.wallContacts_.xi.size() == nw;
+    for (std::size_t k = 0; listOk && k < np; ++k) {
+        listOk = t.pairs_.i[k] >= 0 && t.pairs_.i[k] < t.pairs_.j[k]
+                 && static_cast<std::size_t>(t.pairs_.j[k]) < n && t.pairs_.law[k] >= 0
+                 && t.pairs_.law[k] < nClasses_ * nClasses_;
+    }
+    for (std::size_t k = 0; listOk && k < nw; ++k) {
+        listOk = t.wallContacts_.wall[k] >= 0
+                 && static_cast<std::size_t>(t.wallContacts_.wall[k]) < t.walls_.size();
+    }
+    listOk = listOk && (ready == 0 || (t.pairs_.groupStart.size() == nPairGroups + 1
+                                       && t.wallContacts_.start.size() == n + 1
+                                       && t.pairs_.groupStart.back() == static_cast<int>(np)
+                                       && t.wallContacts_.start.back() == static_cast<int>(nw)));
+    if (!listOk) fail("a bad contact list");
+    t.listValid_ = ready != 0;
+    t.forcesValid_ = ready != 0;
+    *this = std::move(t);
+}
+
+} // namespace dem

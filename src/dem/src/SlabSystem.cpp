@@ -1,0 +1,566 @@
+// The slab mode's engine: System's step with 3-vectors and the 3D contact kernel.
+
+#include "dem/SlabSystem.hpp"
+#include "dem/System.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace dem {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+using Index = std::ptrdiff_t;   // OpenMP loop index
+using Vec3 = Eigen::Vector3d;
+
+const Settings& validatedSlab(const Settings& s)
+{
+    validateSettings(s);
+    if (s.dimension != 3) {
+        throw Error("dimension = " + std::to_string(s.dimension) + " is outside {3}: the slab "
+                    "engine runs spheres in a slab");
+    }
+    return s;
+}
+
+double smallestDiameter(const Settings& s)
+{
+    double d = INFINITY;
+    for (const auto& c : s.classes) d = std::min(d, c.diameter);
+    return d;
+}
+
+double largestDiameter(const Settings& s)
+{
+    double d = 0.0;
+    for (const auto& c : s.classes) d = std::max(d, c.diameter);
+    return d;
+}
+
+double resolvedSkin(const Settings& s)
+{
+    return s.neighbourSkin >= 0.0 ? s.neighbourSkin : 0.1 * smallestDiameter(s);
+}
+
+} // namespace
+
+std::vector<PlaneWall3> slabWalls(const Box& box, double depth)
+{
+    return {
+        {Vec3(box.xMin, box.yMin, 0.0), Vec3(0.0, 1.0, 0.0)},    // floor
+        {Vec3(box.xMax, box.yMin, 0.0), Vec3(-1.0, 0.0, 0.0)},   // right
+        {Vec3(box.xMin, box.yMax, 0.0), Vec3(0.0, -1.0, 0.0)},   // ceiling
+        {Vec3(box.xMin, box.yMin, 0.0), Vec3(1.0, 0.0, 0.0)},    // left
+        {Vec3(box.xMin, box.yMin, 0.0), Vec3(0.0, 0.0, 1.0)},    // front, z = 0
+        {Vec3(box.xMin, box.yMin, depth), Vec3(0.0, 0.0, -1.0)}, // back, z = depth
+    };
+}
+
+void SlabParticles::append(int cls, double diam, double density, const Vec3& pos, const Vec3& vel,
+                           const Vec3& w)
+{
+    const double m = density * pi * diam * diam * diam / 6.0;
+    x.push_back(pos.x()); y.push_back(pos.y()); z.push_back(pos.z());
+    vx.push_back(vel.x()); vy.push_back(vel.y()); vz.push_back(vel.z());
+    wx.push_back(w.x()); wy.push_back(w.y()); wz.push_back(w.z());
+    radius.push_back(0.5 * diam);
+    diameter.push_back(diam);
+    mass.push_back(m);
+    invMass.push_back(1.0 / m);
+    invInertia.push_back(10.0 / (m * diam * diam));   // I = m d^2/10, a solid sphere
+    classIndex.push_back(cls);
+    id.push_back(static_cast<std::int64_t>(id.size()));
+    for (auto* a : {&fx, &fy, &fz, &tx, &ty, &tz, &fluidX, &fluidY, &fluidZ, &dragCoefficient,
+                    &gasVx, &gasVy, &gasVz, &extraFx, &extraFy, &extraFz, &meanVx, &meanVy,
+                    &meanVz, &meanFluidX, &meanFluidY, &meanFluidZ}) {
+        a->push_back(0.0);
+    }
+    xRef.push_back(pos.x()); yRef.push_back(pos.y()); zRef.push_back(pos.z());
+}
+
+SlabSystem::SlabSystem(const Settings& settings)
+    : settings_(validatedSlab(settings)),
+      nClasses_(static_cast<int>(settings.classes.size())),
+      skin_(resolvedSkin(settings)),
+      walls_(slabWalls(settings.box, settings.slabDepth)),
+      search_(settings.box.xMin, settings.box.xMax, settings.box.yMin, settings.box.yMax,
+              largestDiameter(settings) + resolvedSkin(settings))
+{
+    buildLaws();
+}
+
+void SlabSystem::buildLaws()
+{
+    const ContactSettings& c = settings_.contact;
+    std::vector<double> m(nClasses_);
+    for (int k = 0; k < nClasses_; ++k) {
+        const double d = settings_.classes[k].diameter;
+        m[k] = settings_.classes[k].density * pi * d * d * d / 6.0;
+    }
+    for (int a = 0; a < nClasses_; ++a) {
+        for (int b = 0; b < nClasses_; ++b) {
+            const double mEff = m[a] * m[b] / (m[a] + m[b]);
+            pairLaws_.push_back(makeContactLaw(mEff, c.kn, c.kt, c.restitution, c.frictionParticle));
+        }
+        wallLaws_.push_back(makeContactLaw(m[a], c.kn, c.kt, c.restitutionWall, c.frictionWall));
+    }
+}
+
+void SlabSystem::addWall(const Vec3& point, const Vec3& normal)
+{
+    const double length = normal.norm();
+    if (!(length > 0.0) || !std::isfinite(length)) {
+        throw Error("wall normal of length " + formatValue(length) + " is outside (0, inf)");
+    }
+    walls_.push_back({point, normal / length});
+    listValid_ = false;
+    forcesValid_ = false;
+}
+
+void SlabSystem::addParticle(int cls, const Vec3& pos, const Vec3& vel, const Vec3& spin)
+{
+    if (cls < 0 || cls >= nClasses_) {
+        throw Error("classIndex = " + std::to_string(cls) + " is outside [0, "
+                    + std::to_string(nClasses_ - 1) + "]");
+    }
+    const double d = settings_.classes[cls].diameter;
+    const double r = 0.5 * d;
+    for (std::size_t w = 0; w < walls_.size(); ++w) {
+        if (!(walls_[w].distance(pos) >= r - 0.01 * d)) {
+            throw Error("particle of class '" + settings_.classes[cls].name + "' at ("
+                        + formatValue(pos.x()) + ", " + formatValue(pos.y()) + ", "
+                        + formatValue(pos.z()) + ") m pokes through wall " + std::to_string(w)
+                        + " by more than 1 % of its diameter");
+        }
+    }
+    for (std::size_t k = 0; k < p_.size(); ++k) {
+        const double overlap = r + p_.radius[k] - (p_.position(k) - pos).norm();
+        const double allowed = 0.01 * std::min(d, p_.diameter[k]);
+        if (overlap > allowed) {
+            throw Error("particle at (" + formatValue(pos.x()) + ", " + formatValue(pos.y()) + ", "
+                        + formatValue(pos.z()) + ") m overlaps particle " + std::to_string(k)
+                        + " by " + formatValue(overlap) + " m, outside [0, "
+                        + formatValue(allowed) + "] m (1 % of the smaller diameter)");
+        }
+    }
+    p_.append(cls, d, settings_.classes[cls].density, pos, vel, spin);
+    listValid_ = false;
+    forcesValid_ = false;
+}
+
+void SlabSystem::rebuildNeighbourList()
+{
+    const std::size_t n = p_.size();
+    const int ni = static_cast<int>(n);
+
+    // Old non-zero histories by particle i, as System::rebuildNeighbourList.
+    std::vector<int> oldStart(n + 1, 0);
+    for (std::size_t k = 0; k < pairs_.size(); ++k) {
+        if (!pairs_.xi[k].isZero(0.0)) ++oldStart[pairs_.i[k] + 1];
+    }
+    for (std::size_t q = 0; q < n; ++q) oldStart[q + 1] += oldStart[q];
+    std::vector<int> oldPartner(oldStart[n]);
+    std::vector<Vec3> oldXi(oldStart[n]);
+    {
+        std::vector<int> fill(oldStart.begin(), oldStart.end() - 1);
+        for (std::size_t k = 0; k < pairs_.size(); ++k) {
+            if (!pairs_.xi[k].isZero(0.0)) {
+                const int slot = fill[pairs_.i[k]]++;
+                oldPartner[slot] = pairs_.j[k];
+                oldXi[slot] = pairs_.xi[k];
+            }
+        }
+    }
+
+    search_.findPairs(p_.x.data(), p_.y.data(), p_.z.data(), p_.radius.data(), n, skin_, found_,
+                      settings_.nThreads);
+
+    const std::size_t np = found_.size();
+    std::vector<int> slot(nPairGroups + 1, 0);
+    for (const IndexPair& q : found_) ++slot[pairGroup(q.i, q.j, n) + 1];
+    for (int g = 0; g < nPairGroups; ++g) slot[g + 1] += slot[g];
+    pairs_.groupStart = slot;
+    pairs_.i.resize(np);
+    pairs_.j.resize(np);
+    pairs_.law.resize(np);
+    pairs_.xi.resize(np);
+    for (const IndexPair& q : found_) {
+        const int k = slot[pairGroup(q.i, q.j, n)]++;
+        pairs_.i[k] = q.i;
+        pairs_.j[k] = q.j;
+        pairs_.law[k] = p_.classIndex[q.i] * nClasses_ + p_.classIndex[q.j];
+        Vec3 xi = Vec3::Zero();
+        for (int s = oldStart[q.i]; s < oldStart[q.i + 1]; ++s) {
+            if (oldPartner[s] == q.j) {
+                xi = oldXi[s];
+                break;
+            }
+        }
+        pairs_.xi[k] = xi;
+    }
+
+    const int nWalls = static_cast<int>(walls_.size());
+    auto isCandidate = [&](int i, int w) {
+        return walls_[w].distance(p_.position(i)) < p_.radius[i] + skin_;
+    };
+    SlabWallList next;
+    next.start.assign(n + 1, 0);
+    for (int i = 0; i < ni; ++i) {
+        int count = 0;
+        for (int w = 0; w < nWalls; ++w) count += isCandidate(i, w);
+        next.start[i + 1] = next.start[i] + count;
+    }
+    next.wall.resize(next.start[n]);
+    next.xi.resize(next.start[n]);
+    const bool haveOld = wallContacts_.start.size() == n + 1;
+    for (int i = 0; i < ni; ++i) {
+        int s = next.start[i];
+        for (int w = 0; w < nWalls; ++w) {
+            if (!isCandidate(i, w)) continue;
+            Vec3 xi = Vec3::Zero();
+            if (haveOld) {
+                for (int o = wallContacts_.start[i]; o < wallContacts_.start[i + 1]; ++o) {
+                    if (wallContacts_.wall[o] == w) xi = wallContacts_.xi[o];
+                }
+            }
+            next.wall[s] = w;
+            next.xi[s] = xi;
+            ++s;
+        }
+    }
+    wallContacts_ = std::move(next);
+
+    p_.xRef = p_.x;
+    p_.yRef = p_.y;
+    p_.zRef = p_.z;
+    listValid_ = true;
+    ++listBuilds_;
+}
+
+void SlabSystem::ensureReady()
+{
+    if (!listValid_) rebuildNeighbourList();
+    if (!forcesValid_) {
+        computePairForces(0.0);
+        addWallForcesAndKick(0.0, false, false);
+        forcesValid_ = true;
+    }
+}
+
+void SlabSystem::computePairForces(double historyDt)
+{
+    SlabParticles& p = p_;
+    const std::size_t n = p.size();
+    const ContactLaw* laws = pairLaws_.data();
+    const int* groupStart = pairs_.groupStart.data();
+    // Sums over each particle's pairs; p.t* hold the sum of nHat x Ft until
+    // addWallForcesAndKick multiplies it by the radius (the torque on either partner is
+    // r nHat x Ft, see contactForce).
+    auto pairForce = [&](Index k, std::size_t& touching, double& maxOverlap) {
+        const int i = pairs_.i[k];
+        const int j = pairs_.j[k];
+        const Vec3 d(p.x[j] - p.x[i], p.y[j] - p.y[i], p.z[j] - p.z[i]);
+        const double d2 = d.squaredNorm();
+        const double rSum = p.radius[i] + p.radius[j];
+        if (d2 >= rSum * rSum) {
+            pairs_.xi[k].setZero();   // separated: the contact's history ends
+            return;
+        }
+        const double dist = std::sqrt(d2);
+        PairGeometry3 g;
+        g.overlap = rSum - dist;
+        g.nHat = d / dist;
+        g.rI = p.radius[i];
+        g.rJ = p.radius[j];
+        // Contact points: v_i + w_i x (r_i n) and v_j + w_j x (-r_j n).
+        g.vRel = p.velocity(i) - p.velocity(j) + (g.rI * p.spin(i) + g.rJ * p.spin(j)).cross(g.nHat);
+        g.xiT = pairs_.xi[k];
+        const PairForce3 f = contactForce(g, laws[pairs_.law[k]], historyDt);
+        pairs_.xi[k] = f.xiT;
+        const Vec3 nxF = g.nHat.cross(f.ft);
+        p.fx[i] += f.force.x(); p.fy[i] += f.force.y(); p.fz[i] += f.force.z();
+        p.fx[j] -= f.force.x(); p.fy[j] -= f.force.y(); p.fz[j] -= f.force.z();
+        p.tx[i] += nxF.x(); p.ty[i] += nxF.y(); p.tz[i] += nxF.z();
+        p.tx[j] += nxF.x(); p.ty[j] += nxF.y(); p.tz[j] += nxF.z();
+        ++touching;
+        maxOverlap = std::max(maxOverlap, g.overlap);
+    };
+    auto group = [&](int gr, std::size_t& touching, double& maxOverlap) {
+        for (Index k = groupStart[gr]; k < groupStart[gr + 1]; ++k) pairForce(k, touching, maxOverlap);
+    };
+    // The groups of ContactList.hpp: a particle gets its forces in the same order whatever
+    // the thread count.
+    std::size_t touching = 0;
+    double maxOverlap = 0.0;
+#pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
+    reduction(max : maxOverlap)
+    {
+#pragma omp for schedule(static)
+        for (int b = 0; b < nPairBlocks; ++b) {
+            const std::size_t first = pairBlockBegin(b, n);
+            const std::size_t last = pairBlockBegin(b + 1, n);
+            for (auto* a : {&p.fx, &p.fy, &p.fz, &p.tx, &p.ty, &p.tz}) {
+                std::fill(a->begin() + first, a->begin() + last, 0.0);
+            }
+            group(b, touching, maxOverlap);
+        }
+#pragma omp for schedule(static)
+        for (int m = 0; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
+#pragma omp for schedule(static)
+        for (int m = 1; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
+    }
+    group(nPairGroups - 1, touching, maxOverlap);
+    contactCount_ = touching;
+    maxOverlap_ = maxOverlap;
+}
+
+void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
+{
+    const Index n = static_cast<Index>(p_.size());
+    const double h = 0.5 * settings_.dt;
+    const Vec3 g(settings_.gravity[0], settings_.gravity[1], 0.0);
+    const double weight = meanWeight_;
+    SlabParticles& p = p_;
+
+    std::size_t touching = 0;
+    double maxOverlap = maxOverlap_;
+#pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
+    reduction(+ : touching) reduction(max : maxOverlap)
+    for (Index i = 0; i < n; ++i) {
+        const double ri = p.radius[i];
+        Vec3 force(p.fx[i], p.fy[i], p.fz[i]);
+        Vec3 torque = ri * Vec3(p.tx[i], p.ty[i], p.tz[i]);
+        const Vec3 pos = p.position(i);
+        const Vec3 v = p.velocity(i);
+        const Vec3 w = p.spin(i);
+        for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
+            const PlaneWall3& wall = walls_[wallContacts_.wall[s]];
+            const double overlap = ri - wall.distance(pos);
+            if (overlap <= 0.0) {
+                wallContacts_.xi[s].setZero();
+                continue;
+            }
+            PairGeometry3 c;
+            c.overlap = overlap;
+            c.nHat = -wall.nHat;
+            c.vRel = v + (ri * w).cross(c.nHat);
+            c.rI = ri;
+            c.rJ = 0.0;
+            c.xiT = wallContacts_.xi[s];
+            const PairForce3 f = contactForce(c, wallLaws_[p.classIndex[i]], historyDt);
+            force += f.force;
+            torque += f.torqueI;
+            wallContacts_.xi[s] = f.xiT;
+            ++touching;
+            maxOverlap = std::max(maxOverlap, overlap);
+        }
+        p.fx[i] = force.x(); p.fy[i] = force.y(); p.fz[i] = force.z();
+        p.tx[i] = torque.x(); p.ty[i] = torque.y(); p.tz[i] = torque.z();
+        if (!kick) continue;
+
+        const double invM = p.invMass[i];
+        Vec3 vNew;
+        if (fluid) {
+            // Second half-kick with the drag implicit, as System.
+            const double K = p.dragCoefficient[i];
+            const Vec3 gas(p.gasVx[i], p.gasVy[i], p.gasVz[i]);
+            const Vec3 extra(p.extraFx[i], p.extraFy[i], p.extraFz[i]);
+            vNew = (v + h * ((force + K * gas + extra) * invM + g)) / (1.0 + h * K * invM);
+            const Vec3 fluidForce = K * (gas - vNew) + extra;
+            p.fluidX[i] = fluidForce.x(); p.fluidY[i] = fluidForce.y(); p.fluidZ[i] = fluidForce.z();
+            p.meanVx[i] += weight * vNew.x();
+            p.meanVy[i] += weight * vNew.y();
+            p.meanVz[i] += weight * vNew.z();
+        } else {
+            vNew = v + h * (force * invM + g);
+        }
+        p.vx[i] = vNew.x(); p.vy[i] = vNew.y(); p.vz[i] = vNew.z();
+        const Vec3 wNew = w + h * p.invInertia[i] * torque;
+        p.wx[i] = wNew.x(); p.wy[i] = wNew.y(); p.wz[i] = wNew.z();
+    }
+    contactCount_ += touching;
+    maxOverlap_ = maxOverlap;
+}
+
+bool SlabSystem::inside(std::size_t i) const
+{
+    const Box& b = settings_.box;
+    // Written so that NaN counts as outside.
+    return p_.x[i] >= b.xMin && p_.x[i] <= b.xMax && p_.y[i] >= b.yMin && p_.y[i] <= b.yMax
+           && p_.z[i] >= 0.0 && p_.z[i] <= settings_.slabDepth;
+}
+
+void SlabSystem::step(bool fluid)
+{
+    ensureReady();
+    const Index n = static_cast<Index>(p_.size());
+    const double dt = settings_.dt;
+    const double h = 0.5 * dt;
+    const Vec3 g(settings_.gravity[0], settings_.gravity[1], 0.0);
+    SlabParticles& p = p_;
+
+    double maxDisplacement2 = 0.0;
+    int lost = 0;
+#pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
+    reduction(max : maxDisplacement2) reduction(| : lost)
+    for (Index i = 0; i < n; ++i) {
+        const double invM = p.invMass[i];
+        const Vec3 force(p.fx[i] + p.fluidX[i], p.fy[i] + p.fluidY[i], p.fz[i] + p.fluidZ[i]);
+        const Vec3 v = p.velocity(i) + h * (force * invM + g);
+        const Vec3 w = p.spin(i) + h * p.invInertia[i] * Vec3(p.tx[i], p.ty[i], p.tz[i]);
+        p.vx[i] = v.x(); p.vy[i] = v.y(); p.vz[i] = v.z();
+        p.wx[i] = w.x(); p.wy[i] = w.y(); p.wz[i] = w.z();
+        p.x[i] += dt * v.x();
+        p.y[i] += dt * v.y();
+        p.z[i] += dt * v.z();
+        const Vec3 moved(p.x[i] - p.xRef[i], p.y[i] - p.yRef[i], p.z[i] - p.zRef[i]);
+        maxDisplacement2 = std::max(maxDisplacement2, moved.squaredNorm());
+        lost |= !inside(i);
+    }
+    if (lost) throwLostParticle();
+
+    // Rebuild once some particle may have closed half the skin: no contact can be missed.
+    if (4.0 * maxDisplacement2 >= skin_ * skin_) rebuildNeighbourList();
+
+    computePairForces(dt);
+    addWallForcesAndKick(dt, true, fluid);
+    ++stepCount_;
+}
+
+void SlabSystem::setFluidForceAtCurrentVelocity(bool fluid)
+{
+    SlabParticles& p = p_;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double K = fluid ? p.dragCoefficient[i] : 0.0;
+        p.fluidX[i] = fluid ? K * (p.gasVx[i] - p.vx[i]) + p.extraFx[i] : 0.0;
+        p.fluidY[i] = fluid ? K * (p.gasVy[i] - p.vy[i]) + p.extraFy[i] : 0.0;
+        p.fluidZ[i] = fluid ? K * (p.gasVz[i] - p.vz[i]) + p.extraFz[i] : 0.0;
+    }
+}
+
+void SlabSystem::advance(double dtOuter)
+{
+    const double dt = settings_.dt;
+    const double nearest = std::round(dtOuter / dt);
+    if (!(nearest >= 1.0) || !(std::abs(nearest * dt - dtOuter) <= 1e-9 * dtOuter)) {
+        throw Error("dtOuter = " + formatValue(dtOuter) + " s is outside the positive integer "
+                    "multiples of dt = " + formatValue(dt) + " s (relative tolerance 1e-9)");
+    }
+    const long nSub = static_cast<long>(nearest);
+    ensureReady();
+    setFluidForceAtCurrentVelocity(true);
+    SlabParticles& p = p_;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        p.meanVx[i] = 0.5 * p.vx[i];
+        p.meanVy[i] = 0.5 * p.vy[i];
+        p.meanVz[i] = 0.5 * p.vz[i];
+    }
+    for (long s = 1; s <= nSub; ++s) {
+        meanWeight_ = s == nSub ? 0.5 : 1.0;
+        step(true);
+    }
+    const double invN = 1.0 / static_cast<double>(nSub);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        p.meanVx[i] *= invN;
+        p.meanVy[i] *= invN;
+        p.meanVz[i] *= invN;
+        const double K = p.dragCoefficient[i];
+        p.meanFluidX[i] = K * (p.gasVx[i] - p.meanVx[i]) + p.extraFx[i];
+        p.meanFluidY[i] = K * (p.gasVy[i] - p.meanVy[i]) + p.extraFy[i];
+        p.meanFluidZ[i] = K * (p.gasVz[i] - p.meanVz[i]) + p.extraFz[i];
+    }
+}
+
+double SlabSystem::settle(double maxTime, double keTolerance)
+{
+    const std::int64_t first = stepCount_;
+    if (p_.size() == 0) return 0.0;
+    ensureReady();
+    setFluidForceAtCurrentVelocity(false);
+    const double n = static_cast<double>(p_.size());
+    const auto nSteps = static_cast<std::int64_t>(std::ceil(maxTime / settings_.dt - 1e-9));
+    constexpr int checkEvery = 100;   // as System::settle
+    double previous = INFINITY;
+    for (std::int64_t k = 0; k < nSteps; ++k) {
+        if (k % checkEvery == 0) {
+            const double ke = kineticEnergy() / n;
+            if (k > 0 && ke < keTolerance && ke < previous) break;
+            previous = ke;
+        }
+        step(false);
+    }
+    return static_cast<double>(stepCount_ - first) * settings_.dt;
+}
+
+double SlabSystem::kineticEnergy() const
+{
+    double ke = 0.0;
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+        ke += 0.5 * p_.mass[i] * p_.velocity(i).squaredNorm()
+              + 0.5 * p_.spin(i).squaredNorm() / p_.invInertia[i];
+    }
+    return ke;
+}
+
+double SlabSystem::elasticEnergy() const
+{
+    double energy = 0.0;
+    for (std::size_t k = 0; k < pairs_.size(); ++k) {
+        const int i = pairs_.i[k];
+        const int j = pairs_.j[k];
+        const double overlap = p_.radius[i] + p_.radius[j] - (p_.position(j) - p_.position(i)).norm();
+        if (overlap > 0.0) {
+            const ContactLaw& law = pairLaws_[pairs_.law[k]];
+            energy += 0.5 * law.kn * overlap * overlap + 0.5 * law.kt * pairs_.xi[k].squaredNorm();
+        }
+    }
+    for (std::size_t i = 0; i + 1 < wallContacts_.start.size(); ++i) {
+        for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
+            const double overlap = p_.radius[i] - walls_[wallContacts_.wall[s]].distance(p_.position(i));
+            if (overlap > 0.0) {
+                const ContactLaw& law = wallLaws_[p_.classIndex[i]];
+                energy += 0.5 * law.kn * overlap * overlap + 0.5 * law.kt * wallContacts_.xi[s].squaredNorm();
+            }
+        }
+    }
+    return energy;
+}
+
+Vec3 SlabSystem::wallForce(int w) const
+{
+    Vec3 total = Vec3::Zero();
+    for (std::size_t i = 0; i + 1 < wallContacts_.start.size(); ++i) {
+        for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
+            if (wallContacts_.wall[s] != w) continue;
+            const PlaneWall3& wall = walls_[w];
+            const double ri = p_.radius[i];
+            const double overlap = ri - wall.distance(p_.position(i));
+            if (overlap <= 0.0) continue;
+            PairGeometry3 c;
+            c.overlap = overlap;
+            c.nHat = -wall.nHat;
+            c.vRel = p_.velocity(i) + (ri * p_.spin(i)).cross(c.nHat);
+            c.rI = ri;
+            c.rJ = 0.0;
+            c.xiT = wallContacts_.xi[s];
+            total -= contactForce(c, wallLaws_[p_.classIndex[i]], 0.0).force;
+        }
+    }
+    return total;
+}
+
+void SlabSystem::throwLostParticle() const
+{
+    for (std::size_t i = 0; i < p_.size(); ++i) {
+        if (!inside(i)) {
+            throw Error("particle id " + std::to_string(p_.id[i]) + " left the slab at ("
+                        + formatValue(p_.x[i]) + ", " + formatValue(p_.y[i]) + ", "
+                        + formatValue(p_.z[i]) + ") m");
+        }
+    }
+    throw Error("a particle left the slab");
+}
+
+} // namespace dem
