@@ -77,12 +77,12 @@ runSolver
 py - <<PY || fail "Ergun pressure gradient"
 import sys
 sys.path.insert(0, "$testsDir/solver")
-from foamData import internal_field, wen_yu_umf, hoomans
+from foamData import internal_field, wen_yu_umf, hoomans, ergun_gradient
 import numpy as np
 d, rho, mu = $d, 1.204, 1.75e-5
 eps = $eps
 Us = 0.5 * wen_yu_umf(d, 2525, rho)
-ergun = 150*(1-eps)**2*mu*Us/(eps**3*d**2) + 1.75*(1-eps)*rho*Us**2/(eps**3*d)
+ergun = ergun_gradient(eps, d, Us, rho, mu)
 p = internal_field("0.02/p_rgh").reshape(40, 8)        # rows of cells, j = 0 at the bottom
 rows = p.mean(axis=1)
 dy = 7.5e-3
@@ -107,22 +107,20 @@ PY
 if [ "$(momentumScheme)" = face ]
 then
     py - <<PY || fail "the bed's end rows"
-import re, sys
+import sys
 sys.path.insert(0, "$testsDir/solver")
-from foamData import internal_field, wen_yu_umf, hoomans
+from foamData import internal_field, wen_yu_umf, hoomans, ergun_gradient, patch_mean
 import numpy as np
 d, rho, mu = $d, 1.204, 1.75e-5
 eps = $eps
 Us = 0.5 * wen_yu_umf(d, 2525, rho)
-ergun = 150*(1-eps)**2*mu*Us/(eps**3*d**2) + 1.75*(1-eps)*rho*Us**2/(eps**3*d)
+ergun = ergun_gradient(eps, d, Us, rho, mu)
 dy = 7.5e-3
 Uy = internal_field("0.02/U").reshape(40, 8, 3)[:, :, 1]
 expected = np.where(np.arange(40) < 10, Us / eps, Us)
 uErr = np.abs(Uy.mean(axis=1) / expected - 1).max()
 rows = internal_field("0.02/p_rgh").reshape(40, 8).mean(axis=1)
-field = open("0.02/p_rgh").read()
-inlet = re.search(r"inlet\\s*\\{[^}]*?value\\s+nonuniform List<scalar>\\s*\\d+\\(([^)]*)\\)", field)
-p = np.array(inlet.group(1).split(), dtype=float).mean()
+p = patch_mean("0.02/p_rgh", "inlet")
 acceleration = rho / 2 * ((Us / eps)**2 - Us**2)
 lower = (p - rows[8]) / (ergun * 8.5 * dy + acceleration) - 1
 whole = p / (ergun * 10 * dy) - 1
@@ -137,12 +135,12 @@ if [ "$formulation" = B ]
 then
     py - <<PY || fail "distributor pressure against the force on the particles"
 import re, sys
+sys.path.insert(0, "$testsDir/solver")
+from foamData import patch_mean
 import numpy as np
 log = open("log.dpmFoam2D").read()
 force = float(re.findall(r"Exchange: force on particles \\(\\S+ (\\S+) ", log)[-1])
-field = open("0.02/p_rgh").read()
-inlet = re.search(r"inlet\\s*\\{[^}]*?value\\s+nonuniform List<scalar>\\s*\\d+\\(([^)]*)\\)", field)
-p = np.array(inlet.group(1).split(), dtype=float).mean()
+p = patch_mean("0.02/p_rgh", "inlet")
 area = 8 * 7.5e-3 * $depth
 # p_rgh leaves out the gas's hydrostatic head, so it carries the drag only:
 # the buoyancy reaction in the gas's source cancels its -rho phiP g term

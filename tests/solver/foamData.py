@@ -19,3 +19,19 @@ def wen_yu_umf(d, rho_p, rho_g, mu=1.75e-5, g=9.81):
 def hoomans(porosity2d):
     """3D voidage from 2D porosity, Hoomans et al. (1996), exponent 3/2."""
     return 1 - 2 / np.sqrt(np.pi * np.sqrt(3)) * (1 - porosity2d) ** 1.5
+
+
+def ergun_gradient(eps, d, us, rho, mu=1.75e-5):
+    """Ergun (1952) pressure gradient of a fixed bed, Pa/m."""
+    return (150 * (1 - eps)**2 * mu * us / (eps**3 * d**2)
+            + 1.75 * (1 - eps) * rho * us**2 / (eps**3 * d))
+
+
+def patch_mean(path, patch):
+    """Mean of a scalar field's nonuniform value on a patch (ASCII field)."""
+    import re
+    text = open(path).read()
+    m = re.search(patch + r"\s*\{[^}]*?value\s+nonuniform List<scalar>\s*\d+\(([^)]*)\)", text)
+    if m is None:
+        raise ValueError(f"{path}: no nonuniform value on patch {patch}")
+    return np.array(m.group(1).split(), dtype=float).mean()

@@ -86,11 +86,7 @@ void System::packRandom(const std::vector<int>& countPerClass, const Box& region
     for (std::size_t k = 0; k < px.size(); ++k) grid.insert(static_cast<int>(k), px[k], py[k]);
     const std::size_t firstNew = px.size();
 
-    std::vector<int> order(nClasses_);
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int c) {
-        return settings_.classes[a].diameter > settings_.classes[c].diameter;
-    });
+    const std::vector<int> order = classesLargestFirst(settings_);
 
     Random random(seed);
     constexpr int maxAttempts = 100000;

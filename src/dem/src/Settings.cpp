@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <numeric>
 #include <sstream>
 
 namespace dem {
@@ -60,6 +61,26 @@ double timeStepBound(const Settings& settings, int* smallestClass)
     }
     if (smallestClass) *smallestClass = kMin;
     return 2.0 * pi / 5.0 * std::sqrt(mMin / settings.contact.kn);
+}
+
+long subStepCount(double dtOuter, double dt)
+{
+    const double nearest = std::round(dtOuter / dt);
+    if (!(nearest >= 1.0) || !(std::abs(nearest * dt - dtOuter) <= 1e-9 * dtOuter)) {
+        throw Error("dtOuter = " + formatValue(dtOuter) + " s is outside the positive integer "
+                    "multiples of dt = " + formatValue(dt) + " s (relative tolerance 1e-9)");
+    }
+    return static_cast<long>(nearest);
+}
+
+std::vector<int> classesLargestFirst(const Settings& settings)
+{
+    std::vector<int> order(settings.classes.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int c) {
+        return settings.classes[a].diameter > settings.classes[c].diameter;
+    });
+    return order;
 }
 
 void validateSettings(const Settings& s)

@@ -68,11 +68,7 @@ void SlabSystem::packRandom(const std::vector<int>& countPerClass, const Box& re
     }
     const std::size_t firstNew = pos.size();
 
-    std::vector<int> order(nClasses_);
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int c) {
-        return settings_.classes[a].diameter > settings_.classes[c].diameter;
-    });
+    const std::vector<int> order = classesLargestFirst(settings_);
     Random random(seed);
     constexpr int maxAttempts = 100000;
     const double depth = settings_.slabDepth;

@@ -442,13 +442,7 @@ void SlabSystem::setFluidForceAtCurrentVelocity(bool fluid)
 
 void SlabSystem::advance(double dtOuter)
 {
-    const double dt = settings_.dt;
-    const double nearest = std::round(dtOuter / dt);
-    if (!(nearest >= 1.0) || !(std::abs(nearest * dt - dtOuter) <= 1e-9 * dtOuter)) {
-        throw Error("dtOuter = " + formatValue(dtOuter) + " s is outside the positive integer "
-                    "multiples of dt = " + formatValue(dt) + " s (relative tolerance 1e-9)");
-    }
-    const long nSub = static_cast<long>(nearest);
+    const long nSub = subStepCount(dtOuter, settings_.dt);
     ensureReady();
     setFluidForceAtCurrentVelocity(true);
     SlabParticles& p = p_;

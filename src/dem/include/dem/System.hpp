@@ -24,6 +24,14 @@ void validateSettings(const Settings& settings);
 /// Eq. 7 time-step bound (2 pi/5) sqrt(m_min/kn) over the classes, s; smallest class in `cls`.
 double timeStepBound(const Settings& settings, int* smallestClass = nullptr);
 
+/// The DEM steps of dt in one CFD step dtOuter; dem::Error unless a positive whole number
+/// (relative tolerance 1e-9).
+long subStepCount(double dtOuter, double dt);
+
+/// The class indices, largest diameter first (equal diameters in their order): the order
+/// in which a random packing places them.
+std::vector<int> classesLargestFirst(const Settings& settings);
+
 /// Soft-sphere DEM of discs-as-spheres in the x-y plane.
 ///
 /// One step (velocity Verlet, second order):

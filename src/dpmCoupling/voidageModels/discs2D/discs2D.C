@@ -40,29 +40,16 @@ void Foam::voidageModels::discs2D::updateOverlaps
     const label nThreads
 )
 {
-    // Particle by particle on the DEM's threads (the costly part: segment
-    // areas); updateFields sums them into the cells in particle order
-    counts_.setSize(n);
-    cells_.setSize(4*n);
-    fractions_.setSize(4*n);
-    #pragma omp parallel for num_threads(nThreads) schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        const scalar r = 0.5*d[i];
-        const scalar discArea = constant::mathematical::pi*r*r;
-        label count = 0;
-        grid_.forEachDiscOverlap
-        (
-            x[i], y[i], r,
-            [&](const label c, const scalar area)
-            {
-                cells_[4*i + count] = c;
-                fractions_[4*i + count] = area/discArea;
-                ++count;
-            }
-        );
-        counts_[i] = count;
-    }
+    // The costly part (segment areas): on the DEM's threads
+    storeOverlaps
+    (
+        n, x, y, d, nThreads,
+        [this](const scalar xi, const scalar yi, const scalar r, const auto& op)
+        {
+            grid_.forEachDiscOverlap(xi, yi, r, op);
+        },
+        [](const scalar r) { return constant::mathematical::pi*r*r; }
+    );
 }
 
 

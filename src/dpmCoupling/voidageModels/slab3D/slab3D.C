@@ -65,27 +65,15 @@ void Foam::voidageModels::slab3D::updateOverlaps
     const label nThreads
 )
 {
-    counts_.setSize(n);
-    cells_.setSize(4*n);
-    fractions_.setSize(4*n);
-    #pragma omp parallel for num_threads(nThreads) schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        const scalar r = 0.5*d[i];
-        const scalar Vp = 4*constant::mathematical::pi*r*r*r/3;
-        label count = 0;
-        forEachSphereOverlap
-        (
-            grid_, x[i], y[i], r,
-            [&](const label c, const scalar volume)
-            {
-                cells_[4*i + count] = c;
-                fractions_[4*i + count] = volume/Vp;
-                ++count;
-            }
-        );
-        counts_[i] = count;
-    }
+    storeOverlaps
+    (
+        n, x, y, d, nThreads,
+        [this](const scalar xi, const scalar yi, const scalar r, const auto& op)
+        {
+            forEachSphereOverlap(grid_, xi, yi, r, op);
+        },
+        [](const scalar r) { return 4*constant::mathematical::pi*r*r*r/3; }
+    );
 }
 
 
