@@ -1,67 +1,217 @@
 #include "dem/Facade.hpp"
+#include "dem/SlabSystem.hpp"
+#include "dem/StateRecord.hpp"
 #include "dem/System.hpp"
+
+#include <cmath>
 
 namespace dem {
 
-Simulation::Simulation(const Settings& settings) : system_(std::make_unique<System>(settings)) {}
+namespace {
+
+Eigen::Vector3d vec(const Vector3& v) { return {v.x, v.y, v.z}; }
+
+} // namespace
+
+Simulation::Simulation(const Settings& settings)
+{
+    if (settings.dimension == 3) {
+        slab_ = std::make_unique<SlabSystem>(settings);
+    } else {
+        system_ = std::make_unique<System>(settings);   // validates, names a bad dimension
+    }
+}
 Simulation::~Simulation() = default;
+
+SlabSystem& Simulation::slab(const char* what) const
+{
+    if (!slab_) {
+        throw Error(std::string(what) + " is of the slab mode (dimension 3); this simulation "
+                    "has dimension 2");
+    }
+    return *slab_;
+}
 
 void Simulation::packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed)
 {
+    if (slab_) {
+        slabRecipe_.reset();
+        slab_->packRandom(countPerClass, region, seed);
+        return;
+    }
     system_->packRandom(countPerClass, region, seed);
 }
 
-double Simulation::packBed(const BedRecipe& recipe) { return system_->packBed(recipe); }
+double Simulation::packBed(const BedRecipe& recipe)
+{
+    if (!slab_) return system_->packBed(recipe);
+    // The checks of System::packBed, then the same two steps.
+    if (slab_->particles().size() != 0) {
+        throw Error("packBed: the simulation has " + std::to_string(slab_->particles().size())
+                    + " particles already; a bed is packed into an empty one");
+    }
+    if (!(recipe.settleTime >= 0.0) || !std::isfinite(recipe.settleTime)) {
+        throw Error("settle time = " + formatValue(recipe.settleTime) + " s is outside [0, inf)");
+    }
+    if (!(recipe.keTolerance >= 0.0) || !std::isfinite(recipe.keTolerance)) {
+        throw Error("settling tolerance = " + formatValue(recipe.keTolerance)
+                    + " J is outside [0, inf)");
+    }
+    packRandom(recipe.countPerClass, recipe.region, recipe.seed);
+    const double spent = slab_->settle(recipe.settleTime, recipe.keTolerance);
+    slabRecipe_ = std::make_unique<BedRecipe>(recipe);
+    return spent;
+}
 
 void Simulation::addParticle(int classIndex, double x, double y, double vx, double vy, double omega)
 {
+    if (slab_) {
+        throw Error("addParticle(class, x, y, ...) places a disc; the slab mode (dimension 3) "
+                    "takes a position with z");
+    }
     system_->addParticle(classIndex, x, y, vx, vy, omega);
 }
 
-double Simulation::settle(double maxTime, double keTolerance) { return system_->settle(maxTime, keTolerance); }
-std::size_t Simulation::size() const { return system_->particles().size(); }
-const Settings& Simulation::settings() const { return system_->settings(); }
+void Simulation::addParticle(int classIndex, const Vector3& position, const Vector3& velocity,
+                             const Vector3& spin)
+{
+    slab("addParticle with z").addParticle(classIndex, vec(position), vec(velocity), vec(spin));
+    slabRecipe_.reset();   // the particles are no longer the recipe's alone
+}
 
-const double* Simulation::x() const { return system_->particles().x.data(); }
-const double* Simulation::y() const { return system_->particles().y.data(); }
-const double* Simulation::vx() const { return system_->particles().vx.data(); }
-const double* Simulation::vy() const { return system_->particles().vy.data(); }
-const double* Simulation::omega() const { return system_->particles().omega.data(); }
-const double* Simulation::diameter() const { return system_->particles().diameter.data(); }
-const double* Simulation::mass() const { return system_->particles().mass.data(); }
-const int* Simulation::classIndex() const { return system_->particles().classIndex.data(); }
-const std::int64_t* Simulation::id() const { return system_->particles().id.data(); }
+double Simulation::settle(double maxTime, double keTolerance)
+{
+    return slab_ ? slab_->settle(maxTime, keTolerance) : system_->settle(maxTime, keTolerance);
+}
+std::size_t Simulation::size() const
+{
+    return slab_ ? slab_->particles().size() : system_->particles().size();
+}
+const Settings& Simulation::settings() const
+{
+    return slab_ ? slab_->settings() : system_->settings();
+}
 
-double* Simulation::dragCoefficient() { return system_->particles().dragCoefficient.data(); }
-double* Simulation::gasVelocityX() { return system_->particles().gasVx.data(); }
-double* Simulation::gasVelocityY() { return system_->particles().gasVy.data(); }
-double* Simulation::extraForceX() { return system_->particles().extraFx.data(); }
-double* Simulation::extraForceY() { return system_->particles().extraFy.data(); }
+// Arrays of both engines under one name: the slab's if present, else the discs'.
+#define DEM_ARRAY(slabArray, discArray) \
+    (slab_ ? slab_->particles().slabArray.data() : system_->particles().discArray.data())
 
-void Simulation::advance(double dtOuter) { system_->advance(dtOuter); }
-void Simulation::sortByCell() { system_->sortByCell(); }
+const double* Simulation::x() const { return DEM_ARRAY(x, x); }
+const double* Simulation::y() const { return DEM_ARRAY(y, y); }
+const double* Simulation::vx() const { return DEM_ARRAY(vx, vx); }
+const double* Simulation::vy() const { return DEM_ARRAY(vy, vy); }
+const double* Simulation::omega() const { return DEM_ARRAY(wz, omega); }
+const double* Simulation::diameter() const { return DEM_ARRAY(diameter, diameter); }
+const double* Simulation::mass() const { return DEM_ARRAY(mass, mass); }
+const int* Simulation::classIndex() const { return DEM_ARRAY(classIndex, classIndex); }
+const std::int64_t* Simulation::id() const { return DEM_ARRAY(id, id); }
+const double* Simulation::z() const { return slab("z").particles().z.data(); }
+const double* Simulation::vz() const { return slab("vz").particles().vz.data(); }
+const double* Simulation::omegaX() const { return slab("omegaX").particles().wx.data(); }
+const double* Simulation::omegaY() const { return slab("omegaY").particles().wy.data(); }
+const double* Simulation::omegaZ() const { return omega(); }
 
-const double* Simulation::meanVelocityX() const { return system_->particles().meanVx.data(); }
-const double* Simulation::meanVelocityY() const { return system_->particles().meanVy.data(); }
-const double* Simulation::meanFluidForceX() const { return system_->particles().meanFluidX.data(); }
-const double* Simulation::meanFluidForceY() const { return system_->particles().meanFluidY.data(); }
+double* Simulation::dragCoefficient() { return DEM_ARRAY(dragCoefficient, dragCoefficient); }
+double* Simulation::gasVelocityX() { return DEM_ARRAY(gasVx, gasVx); }
+double* Simulation::gasVelocityY() { return DEM_ARRAY(gasVy, gasVy); }
+double* Simulation::extraForceX() { return DEM_ARRAY(extraFx, extraFx); }
+double* Simulation::extraForceY() { return DEM_ARRAY(extraFy, extraFy); }
+double* Simulation::gasVelocityZ() { return slab("gasVelocityZ").particles().gasVz.data(); }
+double* Simulation::extraForceZ() { return slab("extraForceZ").particles().extraFz.data(); }
 
-double Simulation::time() const { return system_->time(); }
-std::int64_t Simulation::stepCount() const { return system_->stepCount(); }
-double Simulation::kineticEnergy() const { return system_->kineticEnergy(); }
-double Simulation::timeStepBound() const { return system_->timeStepBound(); }
-std::size_t Simulation::contactCount() const { return system_->contactCount(); }
-double Simulation::elasticEnergy() const { return system_->elasticEnergy(); }
-double Simulation::maxOverlap() const { return system_->maxOverlap(); }
-std::int64_t Simulation::neighbourListBuilds() const { return system_->neighbourListBuilds(); }
-std::size_t Simulation::memoryBytes() const { return system_->memoryBytes(); }
+void Simulation::advance(double dtOuter)
+{
+    if (slab_) {
+        slab_->advance(dtOuter);
+        return;
+    }
+    system_->advance(dtOuter);
+}
+void Simulation::sortByCell()
+{
+    // The slab engine never renumbers: its tangential histories (3-vectors, odd under a swap
+    // of i and j) stay with their pairs as they are.
+    if (!slab_) system_->sortByCell();
+}
 
-void Simulation::save(const std::string& path) const { system_->save(path); }
-void Simulation::load(const std::string& path) { system_->load(path); }
+const double* Simulation::meanVelocityX() const { return DEM_ARRAY(meanVx, meanVx); }
+const double* Simulation::meanVelocityY() const { return DEM_ARRAY(meanVy, meanVy); }
+const double* Simulation::meanFluidForceX() const { return DEM_ARRAY(meanFluidX, meanFluidX); }
+const double* Simulation::meanFluidForceY() const { return DEM_ARRAY(meanFluidY, meanFluidY); }
+const double* Simulation::meanVelocityZ() const { return slab("meanVelocityZ").particles().meanVz.data(); }
+const double* Simulation::meanFluidForceZ() const
+{
+    return slab("meanFluidForceZ").particles().meanFluidZ.data();
+}
+
+#undef DEM_ARRAY
+
+double Simulation::time() const { return slab_ ? slab_->time() : system_->time(); }
+std::int64_t Simulation::stepCount() const { return slab_ ? slab_->stepCount() : system_->stepCount(); }
+double Simulation::kineticEnergy() const
+{
+    return slab_ ? slab_->kineticEnergy() : system_->kineticEnergy();
+}
+double Simulation::timeStepBound() const
+{
+    // Eq. 7 for the smallest particle: its mass is a sphere's in both modes.
+    return slab_ ? dem::timeStepBound(slab_->settings()) : system_->timeStepBound();
+}
+std::size_t Simulation::contactCount() const
+{
+    return slab_ ? slab_->contactCount() : system_->contactCount();
+}
+double Simulation::elasticEnergy() const
+{
+    return slab_ ? slab_->elasticEnergy() : system_->elasticEnergy();
+}
+double Simulation::maxOverlap() const { return slab_ ? slab_->maxOverlap() : system_->maxOverlap(); }
+std::int64_t Simulation::neighbourListBuilds() const
+{
+    return slab_ ? slab_->neighbourListBuilds() : system_->neighbourListBuilds();
+}
+std::size_t Simulation::memoryBytes() const
+{
+    return slab_ ? slab_->memoryBytes() : system_->memoryBytes();
+}
+
+void Simulation::save(const std::string& path) const
+{
+    if (slab_) {
+        slab_->save(path);
+        return;
+    }
+    system_->save(path);
+}
+void Simulation::load(const std::string& path)
+{
+    if (slab_) {
+        slab_->load(path);
+        slabRecipe_.reset();   // the slab's file holds no recipe
+        return;
+    }
+    system_->load(path);
+}
 bool Simulation::loadBed(const std::string& path, const BedRecipe& recipe)
 {
-    return system_->loadBed(path, recipe);
+    if (!slab_) return system_->loadBed(path, recipe);
+    // Into a copy first, so that a bed made for other particles leaves this one untouched.
+    auto loaded = std::make_unique<SlabSystem>(slab_->settings());
+    loaded->load(path);
+    std::vector<int> counts(slab_->settings().classes.size(), 0);
+    for (int k : loaded->particles().classIndex) ++counts[static_cast<std::size_t>(k)];
+    const std::vector<Difference> differ =
+        compareCounts(counts, recipe.countPerClass, slab_->settings());
+    if (!differ.empty()) {
+        throw Error("bed '" + path + "' was made for other particles: " + describe(differ));
+    }
+    slab_ = std::move(loaded);
+    slabRecipe_.reset();
+    return false;   // counts checked only: the slab's file holds no recipe
 }
-const BedRecipe* Simulation::recipe() const { return system_->recipe(); }
+const BedRecipe* Simulation::recipe() const
+{
+    return slab_ ? slabRecipe_.get() : system_->recipe();
+}
 
 } // namespace dem

@@ -557,4 +557,14 @@ void SlabSystem::throwLostParticle() const
     throw Error("a particle left the slab");
 }
 
+std::size_t SlabSystem::memoryBytes() const
+{
+    std::size_t bytes = search_.memoryBytes() + found_.capacity() * sizeof(IndexPair);
+    auto add = [&](const auto& a) { bytes += a.capacity() * sizeof(a[0]); };
+    p_.forEachArray(add);
+    add(pairs_.i); add(pairs_.j); add(pairs_.law); add(pairs_.xi); add(pairs_.groupStart);
+    add(wallContacts_.start); add(wallContacts_.wall); add(wallContacts_.xi);
+    return bytes;
+}
+
 } // namespace dem

@@ -33,7 +33,7 @@ const Settings& validated(const Settings& s)
     if (s.dimension != 2) {
         throw Error("dimension = " + std::to_string(s.dimension) + " is outside {2}: the 2D "
                     "engine runs discs in a plane; the slab (dimension 3) runs in dem::SlabSystem, "
-                    "which dem::Simulation does not serve yet");
+                    "which dem::Simulation selects for it");
     }
     return s;
 }

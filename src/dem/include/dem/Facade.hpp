@@ -33,6 +33,11 @@ struct Box {
     double xMin, xMax, yMin, yMax;
 };
 
+/// A plain 3-vector (the slab mode's positions, velocities and spins).
+struct Vector3 {
+    double x = 0.0, y = 0.0, z = 0.0;
+};
+
 /// Everything needed to build a Simulation.
 struct Settings {
     std::vector<ParticleClass> classes;
@@ -73,9 +78,14 @@ std::string bedDifferences(const Settings& settings, const BedRecipe& inFile,
                            const BedRecipe& here);
 
 class System;
+class SlabSystem;
 
 /// A DEM run: particles, walls, contacts; advanced in CFD steps with fluid forces.
 /// Particle index i is the same particle for the whole run (id[i] == i).
+/// Settings::dimension selects the engine: 2 the discs (System), 3 the slab (SlabSystem).
+/// The members common to both behave alike; those marked "3D" throw dem::Error in 2D, and
+/// the 2D addParticle throws in 3D. In 3D, x-y members are the spheres' x-y components and
+/// omega() their spin about z.
 class Simulation {
 public:
     /// Validates the settings (ranges, eq. 7 time-step bound); throws dem::Error.
@@ -97,6 +107,10 @@ public:
     /// 1 % of the smaller diameter.
     void addParticle(int classIndex, double x, double y,
                      double vx = 0, double vy = 0, double omega = 0);
+    /// 3D: adds one sphere; throws if it pokes through a wall or overlaps another by more
+    /// than 1 % of its diameter.
+    void addParticle(int classIndex, const Vector3& position, const Vector3& velocity = {},
+                     const Vector3& spin = {});
 
     /// Advances without fluid until the kinetic energy per particle < keTolerance (J) and
     /// falling (checked every 100 steps; a bed released from rest first gains energy), or
@@ -113,6 +127,11 @@ public:
     const double* vx() const;
     const double* vy() const;
     const double* omega() const;       ///< spin about z, rad/s
+    const double* z() const;           ///< 3D
+    const double* vz() const;          ///< 3D
+    const double* omegaX() const;      ///< 3D: spin about x, rad/s
+    const double* omegaY() const;      ///< 3D: spin about y, rad/s
+    const double* omegaZ() const;      ///< spin about z, rad/s (= omega())
     const double* diameter() const;
     const double* mass() const;
     const int* classIndex() const;
@@ -128,6 +147,8 @@ public:
     double* gasVelocityY();            ///< m/s
     double* extraForceX();             ///< N
     double* extraForceY();             ///< N
+    double* gasVelocityZ();            ///< 3D, m/s
+    double* extraForceZ();             ///< 3D, N
     ///@}
 
     /// Advances by one CFD step of dtOuter = n dt; throws dem::Error if dtOuter/dt is not an
@@ -139,6 +160,7 @@ public:
     /// per-particle array (state, inputs, averages) moves along; id() keeps each particle's
     /// identity. The trajectory changes only in the order of round-off. Call it between
     /// CFD steps, before setting the fluid inputs, every few hundred DEM steps.
+    /// 3D: does nothing (the slab engine keeps one numbering; its pair histories never swap).
     void sortByCell();
 
     /// @name Averages over the sub-steps of the last advance()
@@ -148,6 +170,8 @@ public:
     const double* meanVelocityY() const;
     const double* meanFluidForceX() const;
     const double* meanFluidForceY() const;
+    const double* meanVelocityZ() const;    ///< 3D
+    const double* meanFluidForceZ() const;  ///< 3D
     ///@}
 
     double time() const;               ///< s
@@ -176,14 +200,21 @@ public:
     /// settings; throws dem::Error naming the file and every entry that differs (class,
     /// setting, the file's value and this one), leaving the simulation untouched. A file
     /// without the record (state version <= 3, or particles not packed) is checked on its
-    /// counts per class only: returns false then, true when fully checked.
+    /// counts per class only: returns false then, true when fully checked. 3D: the slab's
+    /// state file holds no recipe, so only the counts per class are checked (returns false).
     bool loadBed(const std::string& path, const BedRecipe& recipe);
     /// The recipe of the particles (packBed, or the file they were loaded from); none if
     /// they were placed otherwise.
     const BedRecipe* recipe() const;
 
 private:
+    SlabSystem& slab(const char* what) const;   // throws in 2D, naming `what`
+
+    // Exactly one engine is set. Every call branches once on slab_, outside any loop, so
+    // the 2D path runs the System's code unchanged.
     std::unique_ptr<System> system_;
+    std::unique_ptr<SlabSystem> slab_;
+    std::unique_ptr<BedRecipe> slabRecipe_;     // 3D: how the particles were made
 };
 
 } // namespace dem

@@ -118,6 +118,8 @@ public:
     std::size_t contactCount() const { return contactCount_; }
     double maxOverlap() const { return maxOverlap_; }
     std::int64_t neighbourListBuilds() const { return listBuilds_; }
+    /// Heap memory held by particle, contact and search arrays, bytes.
+    std::size_t memoryBytes() const;
     /// Force the particles exert on wall w at the current state (dashpots at the current
     /// velocity, histories as stored), N.
     Eigen::Vector3d wallForce(int w) const;
