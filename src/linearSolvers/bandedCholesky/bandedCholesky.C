@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-    bandedCholesky: direct L D L^T solver in band storage (see the header).
+    bandedCholesky: direct banded Cholesky solver by LAPACK (see the header).
 \*---------------------------------------------------------------------------*/
 
 #include "bandedCholesky.H"
@@ -11,8 +11,11 @@
 
 // * * * * * * * * * * * * * * * * LAPACK  * * * * * * * * * * * * * * * * * //
 
-// Reference LAPACK's banded Cholesky (Fortran; the trailing arguments are
-// the lengths of the character arguments, gfortran's convention)
+// LAPACK's banded Cholesky (Fortran; the trailing arguments are the
+// lengths of the character arguments, gfortran's convention). The sizes are
+// Fortran integers: the project's labels are 32-bit (etc/bashrc)
+static_assert(sizeof(Foam::label) == sizeof(int), "LAPACK takes int sizes");
+
 extern "C"
 {
     void dpbtrf_
@@ -146,35 +149,26 @@ Foam::scalar Foam::bandedCholesky::factorise
     int info = 0;
     dpbtrf_("L", &n, &b, band.data(), &ldab, &info, 1);
 
-    // A definite matrix has positive pivots; a singular one ends with a
-    // pivot at round-off level (n eps of the diagonal; the smallest pivot
-    // of a sound pressure matrix is ~ diag/rows) or none (info > 0)
-    const label bad =
-        info > 0 ? info - 1
-      : info < 0 ? 0
-      : -1;
+    // A definite matrix has positive pivots: LAPACK stops at the first that
+    // is not (info > 0); a singular one may instead end with a pivot at
+    // round-off level (n eps of the diagonal; the smallest pivot of a sound
+    // pressure matrix is ~ diag/rows)
+    label bad = info > 0 ? info - 1 : -1;
     for (label i = 0; bad < 0 && i < n; ++i)
     {
-        const scalar pivot = sqr(band[i*ldab]);
-        if (!(pivot > 10*n*std::numeric_limits<scalar>::epsilon()*mag(diag[i])))
+        if (!(sqr(band[i*ldab]) > 10*n*std::numeric_limits<scalar>::epsilon()*mag(diag[i])))
         {
-            FatalErrorInFunction
-                << "solver bandedCholesky for " << fieldName_
-                << ": the matrix is singular or not definite (pivot "
-                << sign*pivot << " of cell " << i << ", diagonal " << diag[i]
-                << "). A pressure equation needs a fixed-value boundary"
-                << " or a reference level"
-                << exit(FatalError);
+            bad = i;
         }
     }
-    if (bad >= 0)
+    if (info < 0 || bad >= 0)
     {
         FatalErrorInFunction
             << "solver bandedCholesky for " << fieldName_
             << ": the matrix is singular or not definite (LAPACK dpbtrf"
             << " info " << info << ", cell " << bad << ", diagonal "
-            << diag[bad] << "). A pressure equation needs a fixed-value"
-            << " boundary or a reference level"
+            << (bad >= 0 ? diag[bad] : 0) << "). A pressure equation needs"
+            << " a fixed-value boundary or a reference level"
             << exit(FatalError);
     }
 
