@@ -1,12 +1,36 @@
 /*---------------------------------------------------------------------------*\
-    bandedCholesky: direct L D L^T solver in band storage (see the header).
+    bandedCholesky: direct banded Cholesky solver by LAPACK (see the header).
 \*---------------------------------------------------------------------------*/
 
 #include "bandedCholesky.H"
 #include "addToRunTimeSelectionTable.H"
 #include "knownEntries.H"
 
+#include <cstddef>
 #include <limits>
+
+// * * * * * * * * * * * * * * * * LAPACK  * * * * * * * * * * * * * * * * * //
+
+// LAPACK's banded Cholesky (Fortran; the trailing arguments are the
+// lengths of the character arguments, gfortran's convention). The sizes are
+// Fortran integers: the project's labels are 32-bit (etc/bashrc)
+static_assert(sizeof(Foam::label) == sizeof(int), "LAPACK takes int sizes");
+
+extern "C"
+{
+    void dpbtrf_
+    (
+        const char* uplo, const int* n, const int* kd, double* ab,
+        const int* ldab, int* info, std::size_t uploLen
+    );
+
+    void dpbtrs_
+    (
+        const char* uplo, const int* n, const int* kd, const int* nrhs,
+        const double* ab, const int* ldab, double* b, const int* ldb,
+        int* info, std::size_t uploLen
+    );
+}
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -92,123 +116,63 @@ Foam::label Foam::bandedCholesky::bandwidth() const
 }
 
 
-void Foam::bandedCholesky::factorise
+Foam::scalar Foam::bandedCholesky::factorise
 (
     const label b,
-    scalarField& L,
-    scalarField& D
+    scalarField& band
 ) const
 {
     const label n = matrix_.diag().size();
+    const scalarField& diag = matrix_.diag();
     const labelUList& lower = matrix_.lduAddr().lowerAddr();
     const labelUList& upper = matrix_.lduAddr().upperAddr();
     const scalarField& offDiag = matrix_.upper();   // symmetric: lower == upper
 
-    // Row i holds columns i-b .. i-1 at L[i*b + (j - i + b)]
-    L.setSize(n*b);
-    L = 0;
-    D = matrix_.diag();
+    // LAPACK factorises positive definite matrices: a negative definite one
+    // (the finite-volume Laplacian) is negated
+    const scalar sign = (n && diag[0] < 0) ? -1 : 1;
+
+    // Lower band, column-major: A(i, j), j <= i <= j+b, at (i - j) + j (b+1)
+    const label ldab = b + 1;
+    band.setSize(n*ldab);
+    band = 0;
+    for (label j = 0; j < n; ++j)
+    {
+        band[j*ldab] = sign*diag[j];
+    }
     forAll(lower, facei)
     {
-        const label i = upper[facei];
         const label j = lower[facei];
-        L[i*b + j - i + b] = offDiag[facei];
+        band[upper[facei] - j + j*ldab] = sign*offDiag[facei];
     }
 
-    // Row by row. While row i is worked on, its entries hold
-    // w_k = L(i,k) D(k), the unscaled values; the dot products below run
-    // over contiguous memory of rows i and j.
-    const scalar sign = (D.size() && D[0] < 0) ? -1 : 1;
-    scalar* __restrict__ Lp = L.begin();
+    int info = 0;
+    dpbtrf_("L", &n, &b, band.data(), &ldab, &info, 1);
 
-    for (label i = 0; i < n; ++i)
+    // A definite matrix has positive pivots: LAPACK stops at the first that
+    // is not (info > 0); a singular one may instead end with a pivot at
+    // round-off level (n eps of the diagonal; the smallest pivot of a sound
+    // pressure matrix is ~ diag/rows)
+    label bad = info > 0 ? info - 1 : -1;
+    for (label i = 0; bad < 0 && i < n; ++i)
     {
-        scalar* __restrict__ rowI = Lp + i*b - (i - b);     // rowI[k], k >= i-b
-        const label lo = max(label(0), i - b);
-
-        for (label j = lo; j < i; ++j)
+        if (!(sqr(band[i*ldab]) > 10*n*std::numeric_limits<scalar>::epsilon()*mag(diag[i])))
         {
-            // The dot product in four independent sums: one chain of
-            // dependent additions would leave the multipliers idle
-            const scalar* __restrict__ rowJ = Lp + j*b - (j - b);
-            scalar s0 = rowI[j], s1 = 0, s2 = 0, s3 = 0;
-            label k = max(lo, j - b);
-            for (; k + 3 < j; k += 4)
-            {
-                s0 -= rowI[k]*rowJ[k];
-                s1 -= rowI[k + 1]*rowJ[k + 1];
-                s2 -= rowI[k + 2]*rowJ[k + 2];
-                s3 -= rowI[k + 3]*rowJ[k + 3];
-            }
-            for (; k < j; ++k)
-            {
-                s0 -= rowI[k]*rowJ[k];
-            }
-            rowI[j] = (s0 + s1) + (s2 + s3);
+            bad = i;
         }
-
-        scalar d = D[i];
-        for (label k = lo; k < i; ++k)
-        {
-            const scalar lik = rowI[k]/D[k];
-            d -= lik*rowI[k];
-            rowI[k] = lik;
-        }
-
-        // A definite matrix keeps the sign of its pivots; a singular one
-        // ends with a pivot at round-off level (n eps of the diagonal; the
-        // smallest pivot of a sound pressure matrix is ~ diag/rows)
-        if (!(sign*d > 10*n*std::numeric_limits<scalar>::epsilon()*mag(matrix_.diag()[i])))
-        {
-            FatalErrorInFunction
-                << "solver bandedCholesky for " << fieldName_
-                << ": the matrix is singular or not definite (pivot " << d
-                << " of cell " << i << ", diagonal " << matrix_.diag()[i]
-                << "). A pressure equation needs a fixed-value boundary"
-                << " or a reference level"
-                << exit(FatalError);
-        }
-        D[i] = d;
     }
-}
-
-
-void Foam::bandedCholesky::substitute
-(
-    const label b,
-    const scalarField& L,
-    const scalarField& D,
-    scalarField& x
-)
-{
-    const label n = x.size();
-    const scalar* __restrict__ Lp = L.cdata();
-
-    // L y = r
-    for (label i = 0; i < n; ++i)
+    if (info < 0 || bad >= 0)
     {
-        const scalar* __restrict__ rowI = Lp + i*b - (i - b);
-        scalar s = x[i];
-        for (label k = max(label(0), i - b); k < i; ++k)
-        {
-            s -= rowI[k]*x[k];
-        }
-        x[i] = s;
+        FatalErrorInFunction
+            << "solver bandedCholesky for " << fieldName_
+            << ": the matrix is singular or not definite (LAPACK dpbtrf"
+            << " info " << info << ", cell " << bad << ", diagonal "
+            << (bad >= 0 ? diag[bad] : 0) << "). A pressure equation needs"
+            << " a fixed-value boundary or a reference level"
+            << exit(FatalError);
     }
 
-    // D z = y
-    x /= D;
-
-    // L^T x = z, by columns of L^T (rows of L, contiguous)
-    for (label i = n - 1; i >= 0; --i)
-    {
-        const scalar* __restrict__ rowI = Lp + i*b - (i - b);
-        const scalar xi = x[i];
-        for (label k = max(label(0), i - b); k < i; ++k)
-        {
-            x[k] -= rowI[k]*xi;
-        }
-    }
+    return sign;
 }
 
 
@@ -252,13 +216,20 @@ Foam::solverPerformance Foam::bandedCholesky::solve
                 << exit(FatalIOError);
         }
 
-        scalarField L;
-        scalarField D;
-        factorise(b, L, D);
+        scalarField band;
+        const scalar sign = factorise(b, band);
 
         // Solve for the correction of the current psi: the residual form
         // keeps the round-off relative to the correction
-        substitute(b, L, D, residual);
+        residual *= sign;
+        const label ldab = b + 1;
+        const int nrhs = 1;
+        int info = 0;
+        dpbtrs_
+        (
+            "L", &n, &b, &nrhs, band.cdata(), &ldab, residual.data(), &n,
+            &info, 1
+        );
         psi += residual;
 
         matrix_.Amul(Apsi, psi, interfaceBouCoeffs_, interfaces_, cmpt);
