@@ -125,6 +125,10 @@ dem::Settings Foam::dpmCloud::demSettings() const
         }
         s.neighbourSkin = boundedEntry(dict_, "neighbourSkin", 0, dMin, true);
     }
+    if (slab_)
+    {
+        slabSettings(s);
+    }
     return s;
 }
 
@@ -218,6 +222,7 @@ Foam::dpmCloud::dpmCloud
     writeInterval_(positiveEntry(dict_, "writeInterval", 0.01)),
     voidageMin_(boundedEntryOrDefault(dict_, "voidageMin", 0.1, 0, 1, true)),
     voidageModel_(voidageModel::New(dict_, grid_, voidageMin_)),
+    slab_(voidageModel_->particleDimension() == 3),
     voidage_
     (
         fieldIO("voidage", mesh, mode == startMode::run),
@@ -271,13 +276,17 @@ Foam::dpmCloud::dpmCloud
     caseChecks::bedGeometry(mesh_, grid_);
 
     const dem::Settings settings = demSettings();
+    // The voidage model's own check first (slab3D: the spheres fit in the
+    // slab), in its words rather than the DEM's
+    scalarList diameters(settings.classes.size());
+    forAll(diameters, k) diameters[k] = settings.classes[k].diameter;
+    voidageModel_->checkDiameters(dict_, diameters);
     guarded
     (
         "Invalid particle settings",
         [&]{ dem_.reset(new dem::Simulation(settings)); }
     );
     checkSettings(gas, mode);
-    voidageModel_->checkDiameters(dict_, classDiameters());
 
     subSteps();         // the DEM step must divide the CFD step
     warnThinSlab();
@@ -449,6 +458,10 @@ void Foam::dpmCloud::interpolateGas
         slip[i] = std::sqrt(sx*sx + sy*sy);     // not hypot: 5x dearer, no gain here
     }
 
+    if (slab_)
+    {
+        slabGasInputs(slip);
+    }
     if (mixtureNeeded_)
     {
         interpolateMixture();
@@ -702,7 +715,12 @@ void Foam::dpmCloud::report(Ostream& os) const
         << (mixtureNeeded_ ? " (with the mixture of each cell)" : "") << nl
         << "    bed depth (mesh thickness) " << grid_.depth()*1e3 << " mm, gas cells "
         << grid_.dx()*1e3 << " x " << grid_.dy()*1e3 << " mm ("
-        << grid_.nx() << " x " << grid_.ny() << ")" << nl
+        << grid_.nx() << " x " << grid_.ny() << ")" << nl;
+    if (slab_)
+    {
+        reportSlab(os);
+    }
+    os
         << "    time steps: CFD " << mesh_.time().deltaTValue() << " s, DEM "
         << s.dt << " s (" << subSteps() << " sub-steps); eq. 7 bound "
         << dem_->timeStepBound() << " s" << nl
