@@ -140,10 +140,16 @@ Foam::dpmCloud::bedMatch Foam::dpmCloud::readBed
             return bedMatch::made;
         }
         problem =
-            "it carries no record of how it was packed (a bed of an older"
-            " dpmFoam2D, or particles not packed): its counts per class match"
-            " " + dict_.name() + ", its seed, settleTime and packHeight cannot"
-            " be checked";
+            std::string
+            (
+                slab_
+              ? "it carries no record of how it was packed (the slab mode's"
+                " state file holds none yet)"
+              : "it carries no record of how it was packed (a bed of an older"
+                " dpmFoam2D, or particles not packed)"
+            )
+          + ": its counts per class match " + dict_.name() + ", its seed,"
+            " settleTime and packHeight cannot be checked";
         return bedMatch::unrecorded;
     }
     catch (const dem::Error& err)
