@@ -199,6 +199,11 @@ def main():
         d = p["diameter"].astype(np.float64)
         cls = p["class"].astype(int)
         z = zFront + 1.5 * (d.max() if len(d) else 0.0) + np.zeros(len(d))
+        if len(d):
+            # Spheres of a slab drawn as the camera (+z) sees the front wall
+            # z = 0: the nearer a sphere to it, the higher its disc. 2D files
+            # hold one z (half the depth), so nothing moves.
+            z += pos[:, 2].max() - pos[:, 2]
         lines = []
         for c, prod in producers.items():
             m = cls == c

@@ -16,6 +16,10 @@
 #      rows to 1e-12 relative (written with 12 digits);
 #   3. `dpmFoam2D -postProcess -func laceyIndex` (the etc/caseDicts entry found
 #      by name) reproduces them too.
+# In the slab mode (slab3D <depth>: 3D spheres in a slab, the mesh that
+# thick) the sampling cells are columns through the depth, so the same
+# x-y computation holds, and -postProcess rebuilds the slab's cloud.
+#   laceyIndex.sh <workDir> [slab3D <depth>]
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 
@@ -25,6 +29,7 @@ export WM_PROJECT_SITE="${WM_PROJECT_SITE:-$DPMFOAM2D_PROJECT}"
 
 makeCase "$workDir/case"
 cd "$workDir/case" || fail "cd"
+setSlab "${2:-}" "${3:-}"
 
 # Set entries first: foamDictionary -set would expand #includeFunc.
 setEntry system/controlDict endTime 0.02

@@ -20,7 +20,10 @@
 # force the particles feel and that the particles' area is mapped to cells
 # in full (round-off: relative 1e-10).
 # Every drag model must pass it (the weight does not depend on the drag).
-#   fluidizedPressureDrop.sh <workDir> <pressure in bar> [dragModel]
+# In the slab mode (slab3D <depth>: 3D spheres between walls <depth> apart,
+# the mesh that thick) the same balance with D the slab's depth, and the
+# spheres' volume mapped in full.
+#   fluidizedPressureDrop.sh <workDir> <pressure in bar> [dragModel] [slab3D <depth>]
 # The formulation (A or B, default B) from the environment: FORMULATION=A.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
@@ -39,6 +42,7 @@ setEntry system/controlDict endTime 2
 setEntry system/controlDict writeInterval 0.5
 setFormulation
 setMomentum
+setSlab "${4:-}" "${5:-}"
 cat >>system/controlDict <<'EOF2'
 functions
 {
@@ -60,12 +64,12 @@ grep -q "drag model $model" log.dpmFoam2D || fail "the log does not name the dra
 
 kn=$(foamDictionary -entry contact.kn -value constant/particleProperties) \
     || fail "contact.kn"
-py - "$bar" "$model" "$kn" <<'PY' || fail "fluidized bed pressure drop at $bar bar ($model)"
+py - "$bar" "$model" "$kn" "${slabDepth:-2.5e-3}" <<'PY' || fail "fluidized bed pressure drop at $bar bar ($model)"
 import sys, glob, re
 import numpy as np
 import h5py
 bar = float(sys.argv[1])
-rho_g, g, W, D = 1.204 * bar, 9.81, 0.06, 2.5e-3
+rho_g, g, W, D = 1.204 * bar, 9.81, 0.06, float(sys.argv[4])
 d = np.array([1.5e-3, 2.5e-3]); n = np.array([1200, 260]); rho_p = 2525
 V = np.sum(n * np.pi * d**3 / 6)
 expected = (rho_p - rho_g) * V * g / (W * D)
@@ -103,7 +107,7 @@ print(f"{sys.argv[2]}, {bar:g} bar: mean inlet p_rgh over {t0:g}-{t1:g} s {mean:
 # Exchange balance at each write
 log = open("log.dpmFoam2D").read()
 forces = re.findall(r"force on particles \(([^)]*)\) N, reaction mapped to the gas \(([^)]*)\) N", log)
-areas = re.findall(r"particle area (\S+) m2, mapped to cells (\S+) m2", log)
+areas = re.findall(r"particle (?:area|volume) (\S+) m[23], mapped to cells (\S+) m[23]", log)
 worst = 0.0
 for fp, fg in forces:
     a, b = np.array(fp.split(), float), np.array(fg.split(), float)

@@ -3,7 +3,8 @@
 # time, and N more (N = 1000 DEM steps: the particles are renumbered by cell
 # every 200, at the restart step too). The particles (positions, velocities, spins) and the gas
 # fields must be identical bit for bit (gas written in binary).
-#   restart.sh <workDir> [dragModel]
+# In the slab mode the spheres' z, vz and spin vector too.
+#   restart.sh <workDir> [dragModel] [slab3D <depth>]
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 model="${2:-ErgunWenYu}"     # drag model (Beetstra: the cell mixture too)
@@ -17,6 +18,7 @@ setEntry system/controlDict writeInterval 0.01
 setEntry constant/gasProperties U0byUmf 2
 setEntry constant/particleProperties dragModel "$model"
 setMomentum
+setSlab "${3:-}" "${4:-}"
 cd .. && cp -r once twice || fail "copy"
 
 (cd once && runSolver)
@@ -32,7 +34,10 @@ cd ..
 py - <<'PY' || fail "restart is not bit for bit"
 import sys, h5py, numpy as np
 ok = True
-for name in ("position", "velocity", "omega"):
+names = ["position", "velocity", "omega"]
+with h5py.File("once/particles/0.02.h5") as a:
+    names += ["spin"] if "spin" in a else []
+for name in names:
     with h5py.File("once/particles/0.02.h5") as a, h5py.File("twice/particles/0.02.h5") as b:
         same = np.array_equal(a[name][()], b[name][()])
         print(f"particles {name}: {'identical' if same else 'DIFFERENT'}")

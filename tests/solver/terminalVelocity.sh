@@ -13,7 +13,10 @@
 # pressure-gradient force of the particle's own wake differ from B's by
 # the order of the particle's volume fraction in its cell, V_p/V_cell =
 # 0.3 % here, far inside the tolerance.
-#   terminalVelocity.sh <workDir> [A|B]    (default B)
+# In the slab mode (slab3D <depth>) the sphere falls in the slab's
+# mid-plane between the front and back walls, the voidage its sphere-column
+# volume: the same balance.
+#   terminalVelocity.sh <workDir> [A|B] [slab3D <depth>]    (default B, 2D)
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 
@@ -36,6 +39,7 @@ setEntry system/controlDict endTime 0.4
 setEntry system/controlDict writeInterval 0.4
 setFormulation "${2:-}"
 setMomentum
+setSlab "${3:-}" "${4:-}"
 runSolver
 
 py - <<'PY' || fail "terminal velocity"

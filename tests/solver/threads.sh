@@ -3,7 +3,8 @@
 # on 1 and on 2 threads give the same particles and gas, bit for bit: the
 # DEM and the coupling loops sum in an order that does not depend on the
 # thread count. Correct on a busy machine too (only slower).
-#   threads.sh <workDir> [dragModel]
+# In the slab mode the spheres' z, vz and spin vector too.
+#   threads.sh <workDir> [dragModel] [slab3D <depth>]
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 model="${2:-ErgunWenYu}"     # drag model (Beetstra: the cell mixture too)
@@ -21,6 +22,7 @@ setEntry constant/gasProperties U0byUmf 2
 setEntry constant/particleProperties nThreads 1
 setEntry constant/particleProperties dragModel "$model"
 setMomentum
+setSlab "${3:-}" "${4:-}"
 cd .. && cp -r one two || fail "copy"
 (cd two && setEntry constant/particleProperties nThreads 2)
 
@@ -30,7 +32,10 @@ cd .. && cp -r one two || fail "copy"
 py - <<'PY' || fail "1 and 2 threads differ"
 import sys, h5py, numpy as np
 ok = True
-for name in ("position", "velocity", "omega", "id"):
+names = ["position", "velocity", "omega", "id"]
+with h5py.File("one/particles/0.02.h5") as a:
+    names += ["spin"] if "spin" in a else []
+for name in names:
     with h5py.File("one/particles/0.02.h5") as a, h5py.File("two/particles/0.02.h5") as b:
         same = np.array_equal(a[name][()], b[name][()])
         print(f"particles {name}: {'identical' if same else 'DIFFERENT'}")

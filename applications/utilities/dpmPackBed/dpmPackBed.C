@@ -17,6 +17,12 @@ Description
     settles and saves the bed itself when it starts; dpmPackBed does it
     ahead of time.
 
+    In the slab mode (voidageModel slab3D) it packs 3D spheres between the
+    slab's front and back walls (the mesh's thickness apart). The slab's
+    state file holds no record of how it was made yet (dem::Simulation
+    saves none for the slab): its counts per class are checked, and a
+    second dpmPackBed refuses to overwrite it without -overwrite.
+
     The bed records what it was made for (counts per class, packing region,
     seed, settleTime; diameters, densities, contact settings, box, gravity
     and DEM step): a case whose particles differ is refused with the

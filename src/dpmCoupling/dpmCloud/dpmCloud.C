@@ -2,16 +2,12 @@
 #include "gasProperties.H"
 #include "positiveEntry.H"
 #include "caseChecks.H"
-#include "solidsMixture.H"
 #include "emptyFvPatch.H"
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
 #include "mathematicalConstants.H"
 #include "faultInjection.H"
 
-#include <fstream>
-#include <sstream>
-#include <unistd.h>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -125,6 +121,10 @@ dem::Settings Foam::dpmCloud::demSettings() const
         }
         s.neighbourSkin = boundedEntry(dict_, "neighbourSkin", 0, dMin, true);
     }
+    if (slab_)
+    {
+        slabSettings(s);
+    }
     return s;
 }
 
@@ -218,6 +218,7 @@ Foam::dpmCloud::dpmCloud
     writeInterval_(positiveEntry(dict_, "writeInterval", 0.01)),
     voidageMin_(boundedEntryOrDefault(dict_, "voidageMin", 0.1, 0, 1, true)),
     voidageModel_(voidageModel::New(dict_, grid_, voidageMin_)),
+    slab_(voidageModel_->particleDimension() == 3),
     voidage_
     (
         fieldIO("voidage", mesh, mode == startMode::run),
@@ -271,13 +272,17 @@ Foam::dpmCloud::dpmCloud
     caseChecks::bedGeometry(mesh_, grid_);
 
     const dem::Settings settings = demSettings();
+    // The voidage model's own check first (slab3D: the spheres fit in the
+    // slab), in its words rather than the DEM's
+    scalarList diameters(settings.classes.size());
+    forAll(diameters, k) diameters[k] = settings.classes[k].diameter;
+    voidageModel_->checkDiameters(dict_, diameters);
     guarded
     (
         "Invalid particle settings",
         [&]{ dem_.reset(new dem::Simulation(settings)); }
     );
     checkSettings(gas, mode);
-    voidageModel_->checkDiameters(dict_, classDiameters());
 
     subSteps();         // the DEM step must divide the CFD step
     warnThinSlab();
@@ -449,6 +454,10 @@ void Foam::dpmCloud::interpolateGas
         slip[i] = std::sqrt(sx*sx + sy*sy);     // not hypot: 5x dearer, no gain here
     }
 
+    if (slab_)
+    {
+        slabGasInputs(slip);
+    }
     if (mixtureNeeded_)
     {
         interpolateMixture();
@@ -587,169 +596,4 @@ void Foam::dpmCloud::updateVoidage()
 }
 
 
-void Foam::dpmCloud::updateMixture()
-{
-    const label n = size();
-    const label nCells = mesh_.nCells();
-    const scalar Vc = grid_.cellVolume();
-    const double* d = dem_->diameter();
-    const int* cls = dem_->classIndex();
-
-    classFraction_.setSize(classNames_.size());
-    forAll(classFraction_, k)
-    {
-        classFraction_[k].setSize(nCells);
-        classFraction_[k] = 0;
-    }
-    fractionByDiameter_.setSize(nCells);
-    fractionByDiameter_ = 0;
-
-    // The same shares as particleFraction_ in updateVoidage
-    const labelList& counts = voidageModel_->counts();
-    const labelList& cells = voidageModel_->cells();
-    const scalarList& fractions = voidageModel_->fractions();
-    for (label i = 0; i < n; ++i)
-    {
-        solidsMixture::addParticle
-        (
-            d[i], cls[i], counts[i], &cells[4*i], &fractions[4*i], Vc,
-            classFraction_, fractionByDiameter_
-        );
-    }
-}
-
-
-void Foam::dpmCloud::interpolateMixture()
-{
-    const label n = size();
-    const double* x = dem_->x();
-    const double* y = dem_->y();
-    const double* d = dem_->diameter();
-    const scalarField& phiP = particleFraction_.primitiveField();
-
-    scalarField& dMean = mixtureP_.sauterDiameter;
-    dMean.setSize(n);
-    #pragma omp parallel for num_threads(dem_->settings().nThreads) schedule(static)
-    for (label i = 0; i < n; ++i)
-    {
-        label cells[4];
-        scalar w[4];
-        grid_.interpolationStencil(x[i], y[i], cells, w);
-        dMean[i] = solidsMixture::sauterDiameter
-        (
-            cells, w, phiP, fractionByDiameter_, d[i]
-        );
-    }
-}
-
-
-void Foam::dpmCloud::writeParticlesIfDue()
-{
-    const Time& time = mesh_.time();
-    const scalar t = time.value();
-    const scalar k = std::round(t/writeInterval_);
-    if (mag(t - k*writeInterval_) < 0.5*time.deltaTValue())
-    {
-        writeParticles();
-    }
-}
-
-
-void Foam::dpmCloud::writeParticles()
-{
-    writer_->write
-    (
-        *dem_, voidageP_, gasVelocityP_,
-        mesh_.time().value(), mesh_.time().timeName()
-    );
-}
-
-
-void Foam::dpmCloud::reportBalance(Ostream& os) const
-{
-    vector particleForce = Zero;
-    for (label i = 0; i < size(); ++i)
-    {
-        if (K_.size() == size()) particleForce += exchangedForce(i);
-    }
-    const vector gasForce = gSum(Fp_.primitiveField())*grid_.cellVolume();
-
-    os  << "Exchange: force on particles " << particleForce
-        << " N, reaction mapped to the gas " << gasForce << " N" << nl;
-    voidageModel_->reportBalance
-    (
-        os, size(), dem_->diameter(), particleFraction_.primitiveField()
-    );
-}
-
-
-void Foam::dpmCloud::report(Ostream& os) const
-{
-    const dem::Settings& s = dem_->settings();
-    std::vector<label> counts(classNames_.size(), 0);
-    for (label i = 0; i < size(); ++i) ++counts[dem_->classIndex()[i]];
-    const scalarList w = massFractions();
-
-    os  << "Particles (" << dict_.name() << "):" << nl;
-    forAll(classNames_, k)
-    {
-        os  << "    " << classNames_[k] << ": " << counts[k]
-            << " particles, d = " << s.classes[k].diameter*1e3 << " mm, rho = "
-            << s.classes[k].density << " kg/m3, mass fraction " << w[k] << nl;
-    }
-    os  << "    total mass " << totalMass() << " kg" << nl
-        << "    drag model " << drag_->type()
-        << (mixtureNeeded_ ? " (with the mixture of each cell)" : "") << nl
-        << "    bed depth (mesh thickness) " << grid_.depth()*1e3 << " mm, gas cells "
-        << grid_.dx()*1e3 << " x " << grid_.dy()*1e3 << " mm ("
-        << grid_.nx() << " x " << grid_.ny() << ")" << nl
-        << "    time steps: CFD " << mesh_.time().deltaTValue() << " s, DEM "
-        << s.dt << " s (" << subSteps() << " sub-steps); eq. 7 bound "
-        << dem_->timeStepBound() << " s" << nl
-        << "    particle files every " << writeInterval_ << " s in "
-        << mesh_.time().path()/"particles" << endl;
-}
-
-
-bool Foam::dpmCloud::writeObject
-(
-    IOstream::streamFormat,
-    IOstream::versionNumber,
-    IOstream::compressionType,
-    const bool
-) const
-{
-    save(stateFile(mesh_.time().timeName()));
-    return true;
-}
-
-
-void Foam::dpmCloud::save(const fileName& file) const
-{
-    const faultInjection::action fault = faultInjection::due("stateWrite");
-    if (fault == faultInjection::action::stop)
-    {
-        faultInjection::stop();
-    }
-    else if (fault == faultInjection::action::kill)
-    {
-        // Test only: leave what a kill in the middle of the DEM's write
-        // leaves, half its temporary file and no state
-        const fileName whole = file + ".fault";
-        dem_->save(whole);
-        ::truncate(whole.c_str(), ::off_t(fileSize(whole)/2));
-        Foam::mv(whole, file + ".tmp");
-        faultInjection::kill();
-    }
-    // The write's own error (file, OS reason), not the settings' file
-    try
-    {
-        dem_->save(file);
-    }
-    catch (const dem::Error& err)
-    {
-        FatalErrorInFunction
-            << "Cannot write the particle state: " << err.what()
-            << exit(FatalError);
-    }
-}
+// ************************************************************************* //

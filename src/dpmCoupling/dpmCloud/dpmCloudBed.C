@@ -73,9 +73,11 @@ dem::BedRecipe Foam::dpmCloud::bedRecipe() const
         const scalar d = dem_->settings().classes[k].diameter;
         area += r.countPerClass[k]*constant::mathematical::pi*d*d/4;
     }
+    const scalar filled =
+        slab_ ? slabPackHeight(r.countPerClass) : 3*area/width;
     const scalar packHeight = bed.lookupOrDefault<scalar>
     (
-        "packHeight", min(3*area/width, grid_.yMax() - grid_.yMin())
+        "packHeight", min(filled, grid_.yMax() - grid_.yMin())
     );
     r.region =
         dem::Box
@@ -138,10 +140,16 @@ Foam::dpmCloud::bedMatch Foam::dpmCloud::readBed
             return bedMatch::made;
         }
         problem =
-            "it carries no record of how it was packed (a bed of an older"
-            " dpmFoam2D, or particles not packed): its counts per class match"
-            " " + dict_.name() + ", its seed, settleTime and packHeight cannot"
-            " be checked";
+            std::string
+            (
+                slab_
+              ? "it carries no record of how it was packed (the slab mode's"
+                " state file holds none yet)"
+              : "it carries no record of how it was packed (a bed of an older"
+                " dpmFoam2D, or particles not packed)"
+            )
+          + ": its counts per class match " + dict_.name() + ", its seed,"
+            " settleTime and packHeight cannot be checked";
         return bedMatch::unrecorded;
     }
     catch (const dem::Error& err)
@@ -287,8 +295,11 @@ void Foam::dpmCloud::readPositions(const fileName& file)
     {
         FatalIOErrorInFunction(dict_)
             << "initialBed/positions " << file << " line " << lineNo << ": "
-            << what.c_str() << "; each line is 'class x y' (class index,"
-            << " position in m), '#' starts a comment" << exit(FatalIOError);
+            << what.c_str() << "; each line is "
+            << (slab_ ? "'class x y [z]'" : "'class x y'")
+            << " (class index, position in m"
+            << (slab_ ? "; z the slab's mid-plane if left out" : "")
+            << "), '#' starts a comment" << exit(FatalIOError);
     };
 
     std::string line;
@@ -303,9 +314,16 @@ void Foam::dpmCloud::readPositions(const fileName& file)
         for (std::string w; fields >> w;) words.push_back(w);
         if (words.empty()) continue;        // blank or a comment
 
-        if (words.size() != 3)
+        const bool hasZ = slab_ && words.size() == 4;
+        if (words.size() != 3 && !hasZ)
         {
-            bad(lineNo, std::to_string(words.size()) + " fields, 3 wanted");
+            bad
+            (
+                lineNo,
+                std::to_string(words.size()) + " fields, "
+              + (slab_ ? "3 or 4" : "3")
+              + " wanted"
+            );
         }
         label classIndex = -1;
         if (!readWhole(words[0], classIndex))
@@ -321,18 +339,23 @@ void Foam::dpmCloud::readPositions(const fileName& file)
               + std::to_string(classNames_.size() - 1) + "]"
             );
         }
-        scalar xy[2];
-        for (int k = 0; k < 2; ++k)
+        scalar xy[3];
+        for (label k = 0; k + 1 < label(words.size()); ++k)
         {
             if (!readFinite(words[k + 1], xy[k]))
             {
                 bad
                 (
                     lineNo,
-                    std::string(k ? "y" : "x") + " = '" + words[k + 1]
+                    std::string(1, "xyz"[k]) + " = '" + words[k + 1]
                   + "' is not a finite number"
                 );
             }
+        }
+        if (slab_)
+        {
+            addListedSphere(classIndex, xy, hasZ);
+            continue;
         }
         guarded
         (

@@ -13,12 +13,14 @@ void Foam::dpmCloud::warnThinSlab() const
 {
     if (formulation_ != couplingFormulation::A) return;
 
-    // The densest packing (hexagonal discs) of the largest particles fills
-    // phiP = pi/(2 sqrt 3) (2/3) d/depth of a cell's volume
+    // The densest packing of the largest particles fills phiP =
+    // pi/(2 sqrt 3) (2/3) d/depth of a cell's volume (hexagonal discs), at
+    // most pi/(3 sqrt 2) (spheres in the slab mode)
     scalar dMax = 0;
     for (const scalar d : classDiameters()) dMax = max(dMax, d);
+    const scalar pi = constant::mathematical::pi;
     const scalar phiPMax =
-        constant::mathematical::pi/(3*sqrt(3.0))*dMax/grid_.depth();
+        slab_ ? pi/(3*sqrt(2.0)) : pi/(3*sqrt(3.0))*dMax/grid_.depth();
     if (phiPMax > 1 - voidageMin_)
     {
         WarningInFunction

@@ -145,6 +145,7 @@ void Foam::particleWriter::write
     std::vector<float> position(3*n), velocity(3*n), omega(n), diameter(n);
     std::vector<signed char> classIndex(n);
     std::vector<int> id(n);
+    const bool slab = particles.settings().dimension == 3;
     for (hsize_t i = 0; i < n; ++i)
     {
         position[3*i] = float(particles.x()[i]);
@@ -157,6 +158,16 @@ void Foam::particleWriter::write
         diameter[i] = float(particles.diameter()[i]);
         classIndex[i] = static_cast<signed char>(particles.classIndex()[i]);
         id[i] = int(particles.id()[i]);
+    }
+    // The slab mode's spheres: their real z, vz and spin vector
+    std::vector<float> spin(slab ? 3*n : 0);
+    for (hsize_t i = 0; slab && i < n; ++i)
+    {
+        position[3*i + 2] = float(particles.z()[i]);
+        velocity[3*i + 2] = float(particles.vz()[i]);
+        spin[3*i] = float(particles.omegaX()[i]);
+        spin[3*i + 1] = float(particles.omegaY()[i]);
+        spin[3*i + 2] = float(particles.omegaZ()[i]);
     }
 
     // The file is made in memory (HDF5's core driver) and written as a
@@ -188,6 +199,7 @@ void Foam::particleWriter::write
     ok = ok && writeDataset(h5, "position", H5T_NATIVE_FLOAT, position, n, 3);
     ok = ok && writeDataset(h5, "velocity", H5T_NATIVE_FLOAT, velocity, n, 3);
     ok = ok && writeDataset(h5, "omega", H5T_NATIVE_FLOAT, omega, n, 1);
+    ok = ok && (!slab || writeDataset(h5, "spin", H5T_NATIVE_FLOAT, spin, n, 3));
     ok = ok && writeDataset(h5, "diameter", H5T_NATIVE_FLOAT, diameter, n, 1);
     ok = ok && writeDataset(h5, "class", H5T_NATIVE_SCHAR, classIndex, n, 1);
     ok = ok && writeDataset(h5, "id", H5T_NATIVE_INT, id, n, 1);
@@ -241,6 +253,7 @@ void Foam::particleWriter::write
 void Foam::particleWriter::writeIndex(const dem::Simulation& particles) const
 {
     const label n = particles.size();
+    const bool slab = particles.settings().dimension == 3;
     OStringStream os;
     {
         os  << "<?xml version=\"1.0\" ?>\n"
@@ -284,6 +297,10 @@ void Foam::particleWriter::writeIndex(const dem::Simulation& particles) const
             os  << "   </Geometry>\n";
             attribute(h5, "velocity", "Node", "Vector", "Float", 4, 3);
             attribute(h5, "omega", "Node", "Scalar", "Float", 4, 1);
+            if (slab)
+            {
+                attribute(h5, "spin", "Node", "Vector", "Float", 4, 3);
+            }
             attribute(h5, "diameter", "Node", "Scalar", "Float", 4, 1);
             attribute(h5, "class", "Node", "Scalar", "Char", 1, 1);
             attribute(h5, "id", "Node", "Scalar", "Int", 4, 1);

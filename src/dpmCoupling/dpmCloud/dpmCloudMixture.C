@@ -1,0 +1,68 @@
+/*---------------------------------------------------------------------------*\
+    dpmCloud's solids mixture, kept when the drag model needs it (Beetstra):
+    the per-class volume fractions of the cells, mapped with the voidage
+    model's shares, and the Sauter mean diameter at each particle.
+\*---------------------------------------------------------------------------*/
+
+#include "dpmCloud.H"
+#include "solidsMixture.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dpmCloud::updateMixture()
+{
+    const label n = size();
+    const label nCells = mesh_.nCells();
+    const scalar Vc = grid_.cellVolume();
+    const double* d = dem_->diameter();
+    const int* cls = dem_->classIndex();
+
+    classFraction_.setSize(classNames_.size());
+    forAll(classFraction_, k)
+    {
+        classFraction_[k].setSize(nCells);
+        classFraction_[k] = 0;
+    }
+    fractionByDiameter_.setSize(nCells);
+    fractionByDiameter_ = 0;
+
+    // The same shares as particleFraction_ in updateVoidage
+    const labelList& counts = voidageModel_->counts();
+    const labelList& cells = voidageModel_->cells();
+    const scalarList& fractions = voidageModel_->fractions();
+    for (label i = 0; i < n; ++i)
+    {
+        solidsMixture::addParticle
+        (
+            d[i], cls[i], counts[i], &cells[4*i], &fractions[4*i], Vc,
+            classFraction_, fractionByDiameter_
+        );
+    }
+}
+
+
+void Foam::dpmCloud::interpolateMixture()
+{
+    const label n = size();
+    const double* x = dem_->x();
+    const double* y = dem_->y();
+    const double* d = dem_->diameter();
+    const scalarField& phiP = particleFraction_.primitiveField();
+
+    scalarField& dMean = mixtureP_.sauterDiameter;
+    dMean.setSize(n);
+    #pragma omp parallel for num_threads(dem_->settings().nThreads) schedule(static)
+    for (label i = 0; i < n; ++i)
+    {
+        label cells[4];
+        scalar w[4];
+        grid_.interpolationStencil(x[i], y[i], cells, w);
+        dMean[i] = solidsMixture::sauterDiameter
+        (
+            cells, w, phiP, fractionByDiameter_, d[i]
+        );
+    }
+}
+
+
+// ************************************************************************* //
