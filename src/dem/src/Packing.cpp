@@ -4,6 +4,7 @@
 // packBed adds the settling and keeps the recipe, which the state file records.
 
 #include "dem/Random.hpp"
+#include "dem/StateRecord.hpp"
 #include "dem/System.hpp"
 
 #include <algorithm>
@@ -148,17 +149,7 @@ void System::packRandom(const std::vector<int>& countPerClass, const Box& region
 
 double System::packBed(const BedRecipe& recipe)
 {
-    if (p_.size() != 0) {
-        throw Error("packBed: the simulation has " + std::to_string(p_.size())
-                    + " particles already; a bed is packed into an empty one");
-    }
-    if (!(recipe.settleTime >= 0.0) || !std::isfinite(recipe.settleTime)) {
-        throw Error("settle time = " + formatValue(recipe.settleTime) + " s is outside [0, inf)");
-    }
-    if (!(recipe.keTolerance >= 0.0) || !std::isfinite(recipe.keTolerance)) {
-        throw Error("settling tolerance = " + formatValue(recipe.keTolerance)
-                    + " J is outside [0, inf)");
-    }
+    checkPackBed(p_.size(), recipe);
     packRandom(recipe.countPerClass, recipe.region, recipe.seed);
     const double spent = settle(recipe.settleTime, recipe.keTolerance);
     recipe_ = recipe;

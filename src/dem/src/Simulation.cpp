@@ -1,9 +1,7 @@
 #include "dem/Facade.hpp"
 #include "dem/SlabSystem.hpp"
-#include "dem/StateRecord.hpp"
 #include "dem/System.hpp"
 
-#include <cmath>
 
 namespace dem {
 
@@ -35,7 +33,6 @@ SlabSystem& Simulation::slab(const char* what) const
 void Simulation::packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed)
 {
     if (slab_) {
-        slabRecipe_.reset();
         slab_->packRandom(countPerClass, region, seed);
         return;
     }
@@ -44,23 +41,7 @@ void Simulation::packRandom(const std::vector<int>& countPerClass, const Box& re
 
 double Simulation::packBed(const BedRecipe& recipe)
 {
-    if (!slab_) return system_->packBed(recipe);
-    // The checks of System::packBed, then the same two steps.
-    if (slab_->particles().size() != 0) {
-        throw Error("packBed: the simulation has " + std::to_string(slab_->particles().size())
-                    + " particles already; a bed is packed into an empty one");
-    }
-    if (!(recipe.settleTime >= 0.0) || !std::isfinite(recipe.settleTime)) {
-        throw Error("settle time = " + formatValue(recipe.settleTime) + " s is outside [0, inf)");
-    }
-    if (!(recipe.keTolerance >= 0.0) || !std::isfinite(recipe.keTolerance)) {
-        throw Error("settling tolerance = " + formatValue(recipe.keTolerance)
-                    + " J is outside [0, inf)");
-    }
-    packRandom(recipe.countPerClass, recipe.region, recipe.seed);
-    const double spent = slab_->settle(recipe.settleTime, recipe.keTolerance);
-    slabRecipe_ = std::make_unique<BedRecipe>(recipe);
-    return spent;
+    return slab_ ? slab_->packBed(recipe) : system_->packBed(recipe);
 }
 
 void Simulation::addParticle(int classIndex, double x, double y, double vx, double vy, double omega)
@@ -76,7 +57,6 @@ void Simulation::addParticle(int classIndex, const Vector3& position, const Vect
                              const Vector3& spin)
 {
     slab("addParticle with z").addParticle(classIndex, vec(position), vec(velocity), vec(spin));
-    slabRecipe_.reset();   // the particles are no longer the recipe's alone
 }
 
 double Simulation::settle(double maxTime, double keTolerance)
@@ -187,31 +167,17 @@ void Simulation::load(const std::string& path)
 {
     if (slab_) {
         slab_->load(path);
-        slabRecipe_.reset();   // the slab's file holds no recipe
         return;
     }
     system_->load(path);
 }
 bool Simulation::loadBed(const std::string& path, const BedRecipe& recipe)
 {
-    if (!slab_) return system_->loadBed(path, recipe);
-    // Into a copy first, so that a bed made for other particles leaves this one untouched.
-    auto loaded = std::make_unique<SlabSystem>(slab_->settings());
-    loaded->load(path);
-    std::vector<int> counts(slab_->settings().classes.size(), 0);
-    for (int k : loaded->particles().classIndex) ++counts[static_cast<std::size_t>(k)];
-    const std::vector<Difference> differ =
-        compareCounts(counts, recipe.countPerClass, slab_->settings());
-    if (!differ.empty()) {
-        throw Error("bed '" + path + "' was made for other particles: " + describe(differ));
-    }
-    slab_ = std::move(loaded);
-    slabRecipe_.reset();
-    return false;   // counts checked only: the slab's file holds no recipe
+    return slab_ ? slab_->loadBed(path, recipe) : system_->loadBed(path, recipe);
 }
 const BedRecipe* Simulation::recipe() const
 {
-    return slab_ ? slabRecipe_.get() : system_->recipe();
+    return slab_ ? slab_->recipe() : system_->recipe();
 }
 
 } // namespace dem

@@ -2,6 +2,8 @@
 // forces of the last evaluation, the neighbour list in its order with the 3-vector
 // histories, the wall contacts, the reference positions), so a restart continues bit for
 // bit. A file of its own kind: a 2D state and a slab state cannot be mistaken for each other.
+// Since version 2 it holds the recipe of a packed bed, so that a case starting from it
+// checks every entry of how it was made (version 1: the counts per class only).
 
 #include "dem/Random.hpp"
 #include "dem/SlabSystem.hpp"
@@ -23,7 +25,8 @@ namespace dem {
 namespace {
 
 constexpr char slabMagic[16] = "dpmFoam2D-slab\n";
-constexpr std::uint32_t slabVersion = 1;
+constexpr std::uint32_t slabVersion = 2;
+constexpr std::uint32_t slabVersionNoRecipe = 1;
 
 std::vector<double> slabKey(const Settings& s)
 {
@@ -38,6 +41,7 @@ std::vector<double> slabKey(const Settings& s)
 void SlabSystem::packRandom(const std::vector<int>& countPerClass, const Box& region,
                             std::uint64_t seed)
 {
+    recipe_.reset();   // packBed sets it once the bed has settled
     if (static_cast<int>(countPerClass.size()) != nClasses_) {
         throw Error("countPerClass has " + std::to_string(countPerClass.size())
                     + " entries, outside [" + std::to_string(nClasses_) + ", "
@@ -125,6 +129,15 @@ void SlabSystem::packRandom(const std::vector<int>& countPerClass, const Box& re
     forcesValid_ = false;
 }
 
+double SlabSystem::packBed(const BedRecipe& recipe)
+{
+    checkPackBed(p_.size(), recipe);
+    packRandom(recipe.countPerClass, recipe.region, recipe.seed);
+    const double spent = settle(recipe.settleTime, recipe.keTolerance);
+    recipe_ = recipe;
+    return spent;
+}
+
 void SlabSystem::save(const std::string& path) const
 {
     namespace fs = std::filesystem;
@@ -146,6 +159,14 @@ void SlabSystem::save(const std::string& path) const
         bytes(slabMagic, sizeof(slabMagic));
         value(slabVersion);
         array(slabKey(settings_));
+        value(static_cast<std::uint8_t>(recipe_.has_value()));
+        if (recipe_) {
+            array(recipe_->countPerClass);
+            value(recipe_->region);
+            value(recipe_->seed);
+            value(recipe_->settleTime);
+            value(recipe_->keTolerance);
+        }
         value(stepCount_);
         value(listBuilds_);
         std::vector<double> wallData;
@@ -197,7 +218,10 @@ void SlabSystem::load(const std::string& path)
     if (std::memcmp(head, slabMagic, sizeof(slabMagic)) != 0) fail("wrong file type");
     std::uint32_t version = 0;
     value(version);
-    if (version != slabVersion) fail("version " + std::to_string(version) + ", expected 1");
+    if (version != slabVersion && version != slabVersionNoRecipe) {
+        fail("version " + std::to_string(version) + ", expected "
+             + std::to_string(slabVersionNoRecipe) + " or " + std::to_string(slabVersion));
+    }
     std::vector<double> key;
     array(key);
     const std::vector<double> here = slabKey(settings_);
@@ -210,6 +234,20 @@ void SlabSystem::load(const std::string& path)
         fail(what);
     }
     SlabSystem t(settings_);
+    std::uint8_t hasRecipe = 0;
+    if (version >= 2) value(hasRecipe);
+    if (hasRecipe) {
+        BedRecipe recipe;
+        array(recipe.countPerClass);
+        value(recipe.region);
+        value(recipe.seed);
+        value(recipe.settleTime);
+        value(recipe.keTolerance);
+        if (recipe.countPerClass.size() != static_cast<std::size_t>(nClasses_)) {
+            fail("a bed recipe of " + std::to_string(recipe.countPerClass.size()) + " classes");
+        }
+        t.recipe_ = recipe;
+    }
     value(t.stepCount_);
     value(t.listBuilds_);
     std::vector<double> wallData;
@@ -254,6 +292,20 @@ void SlabSystem::load(const std::string& path)
     t.listValid_ = ready != 0;
     t.forcesValid_ = ready != 0;
     *this = std::move(t);
+}
+
+bool SlabSystem::loadBed(const std::string& path, const BedRecipe& recipe)
+{
+    SlabSystem t(settings_);
+    t.load(path);
+    const std::vector<Difference> differ =
+        compareBed(t.recipe(), t.p_.classIndex, recipe, settings_);
+    if (!differ.empty()) {
+        throw Error("bed '" + path + "' was made for other particles: " + describe(differ));
+    }
+    const bool checked = t.recipe_.has_value();
+    *this = std::move(t);
+    return checked;
 }
 
 } // namespace dem

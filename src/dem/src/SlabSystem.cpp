@@ -58,6 +58,19 @@ std::vector<PlaneWall3> slabWalls(const Box& box, double depth)
     };
 }
 
+namespace {
+
+// The name of wall w in messages: the slab's six in slabWalls' order, then added ones.
+std::string wallName(std::size_t w)
+{
+    static const char* const names[] = {"the floor (y = yMin)", "the right wall (x = xMax)",
+                                        "the ceiling (y = yMax)", "the left wall (x = xMin)",
+                                        "the front wall (z = 0)", "the back wall (z = slabDepth)"};
+    return w < 6 ? names[w] : "added wall " + std::to_string(w);
+}
+
+} // namespace
+
 void SlabParticles::append(int cls, double diam, double density, const Vec3& pos, const Vec3& vel,
                            const Vec3& w)
 {
@@ -131,7 +144,7 @@ void SlabSystem::addParticle(int cls, const Vec3& pos, const Vec3& vel, const Ve
         if (!(walls_[w].distance(pos) >= r - 0.01 * d)) {
             throw Error("particle of class '" + settings_.classes[cls].name + "' at ("
                         + formatValue(pos.x()) + ", " + formatValue(pos.y()) + ", "
-                        + formatValue(pos.z()) + ") m pokes through wall " + std::to_string(w)
+                        + formatValue(pos.z()) + ") m pokes through " + wallName(w)
                         + " by more than 1 % of its diameter");
         }
     }
@@ -148,6 +161,7 @@ void SlabSystem::addParticle(int cls, const Vec3& pos, const Vec3& vel, const Ve
     p_.append(cls, d, settings_.classes[cls].density, pos, vel, spin);
     listValid_ = false;
     forcesValid_ = false;
+    recipe_.reset();   // the particles are no longer the recipe's alone
 }
 
 void SlabSystem::rebuildNeighbourList()

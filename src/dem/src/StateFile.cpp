@@ -288,15 +288,8 @@ bool StateFile::loadBed(System& s, const std::string& path, const BedRecipe& rec
 {
     System t = s;
     load(t, path);
-    std::vector<Difference> differ;
-    if (t.recipe_) {
-        differ = compareRecipes(*t.recipe_, recipe, s.settings_);
-    } else {
-        // No record of how it was made: its counts per class still show a wrong mix.
-        std::vector<int> counts(static_cast<std::size_t>(t.nClasses_), 0);
-        for (int k : t.p_.classIndex) ++counts[static_cast<std::size_t>(k)];
-        differ = compareCounts(counts, recipe.countPerClass, s.settings_);
-    }
+    const std::vector<Difference> differ =
+        compareBed(t.recipe(), t.p_.classIndex, recipe, s.settings_);
     if (!differ.empty()) {
         throw Error("bed '" + path + "' was made for other particles: " + describe(differ));
     }

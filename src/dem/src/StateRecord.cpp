@@ -3,6 +3,7 @@
 
 #include "dem/StateRecord.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <utility>
@@ -144,6 +145,31 @@ std::vector<Difference> compareRecipes(const BedRecipe& inFile, const BedRecipe&
         d.push_back(differ("settling tolerance", inFile.keTolerance, here.keTolerance, " J"));
     }
     return d;
+}
+
+void checkPackBed(std::size_t particles, const BedRecipe& recipe)
+{
+    if (particles != 0) {
+        throw Error("packBed: the simulation has " + std::to_string(particles)
+                    + " particles already; a bed is packed into an empty one");
+    }
+    if (!(recipe.settleTime >= 0.0) || !std::isfinite(recipe.settleTime)) {
+        throw Error("settle time = " + formatValue(recipe.settleTime) + " s is outside [0, inf)");
+    }
+    if (!(recipe.keTolerance >= 0.0) || !std::isfinite(recipe.keTolerance)) {
+        throw Error("settling tolerance = " + formatValue(recipe.keTolerance)
+                    + " J is outside [0, inf)");
+    }
+}
+
+std::vector<Difference> compareBed(const BedRecipe* inFile, const std::vector<int>& classIndex,
+                                   const BedRecipe& here, const Settings& s)
+{
+    if (inFile) return compareRecipes(*inFile, here, s);
+    // No record of how it was made: its counts per class still show a wrong mix.
+    std::vector<int> counts(s.classes.size(), 0);
+    for (int k : classIndex) ++counts[static_cast<std::size_t>(k)];
+    return compareCounts(counts, here.countPerClass, s);
 }
 
 std::string describe(const std::vector<Difference>& differences)

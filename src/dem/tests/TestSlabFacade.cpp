@@ -170,8 +170,9 @@ TEST(SlabFacade, SaveAndLoadContinueBitForBit)
 
 TEST(SlabFacade, BedRecordAndCountsPerClass)
 {
-    // packBed keeps its recipe in memory; the slab's state file holds none, so loadBed checks
-    // the counts per class (returns false) and refuses another mix, leaving the bed as it was.
+    // packBed keeps its recipe and save() records it (slab state version 2): loadBed checks
+    // every entry of it (returns true), refuses a bed made otherwise naming the entry, and
+    // leaves the slab as it was; addParticle makes the particles no longer the recipe's.
     Simulation sim(slabFacadeSettings(1));
     const BedRecipe recipe{counts, region, 5, 0.01, 0.0};
     sim.packBed(recipe);
@@ -182,17 +183,26 @@ TEST(SlabFacade, BedRecordAndCountsPerClass)
 
     Simulation other(slabFacadeSettings(1));
     other.addParticle(0, {0.01, 0.01, 0.003});
-    BedRecipe wrong = recipe;
-    wrong.countPerClass = {100, 40};
-    try {
-        other.loadBed(path, wrong);
-        ADD_FAILURE() << "a bed of another mix was accepted";
-    } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("small"), std::string::npos) << e.what();
+    EXPECT_EQ(other.recipe(), nullptr);
+    BedRecipe otherMix = recipe;
+    otherMix.countPerClass = {100, 40};
+    BedRecipe otherSeed = recipe;
+    otherSeed.seed = 6;
+    for (const auto& [wrong, entry] : {std::pair{otherMix, "small"}, std::pair{otherSeed, "seed"}}) {
+        try {
+            other.loadBed(path, wrong);
+            ADD_FAILURE() << "a bed made otherwise was accepted (" << entry << ")";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(entry), std::string::npos) << e.what();
+        }
     }
     EXPECT_EQ(other.size(), 1u);
-    EXPECT_FALSE(other.loadBed(path, recipe));
+    EXPECT_TRUE(other.loadBed(path, recipe));
+    ASSERT_NE(other.recipe(), nullptr);
+    EXPECT_EQ(other.recipe()->seed, 5u);
     expectSameBits(sim, other, "loadBed");
+    other.addParticle(0, {0.01, 0.035, 0.003});   // above the settled bed
+    EXPECT_EQ(other.recipe(), nullptr);
     std::filesystem::remove(path);
 }
 

@@ -200,8 +200,8 @@ public:
     /// settings; throws dem::Error naming the file and every entry that differs (class,
     /// setting, the file's value and this one), leaving the simulation untouched. A file
     /// without the record (state version <= 3, or particles not packed) is checked on its
-    /// counts per class only: returns false then, true when fully checked. 3D: the slab's
-    /// state file holds no recipe, so only the counts per class are checked (returns false).
+    /// counts per class only: returns false then, true when fully checked. The slab's
+    /// files record the recipe since their version 2.
     bool loadBed(const std::string& path, const BedRecipe& recipe);
     /// The recipe of the particles (packBed, or the file they were loaded from); none if
     /// they were placed otherwise.
@@ -214,7 +214,6 @@ private:
     // the 2D path runs the System's code unchanged.
     std::unique_ptr<System> system_;
     std::unique_ptr<SlabSystem> slab_;
-    std::unique_ptr<BedRecipe> slabRecipe_;     // 3D: how the particles were made
 };
 
 } // namespace dem

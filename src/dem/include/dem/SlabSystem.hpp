@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,9 @@ public:
                      const Eigen::Vector3d& spin = Eigen::Vector3d::Zero());
     /// Random sequential addition in region x [0, slabDepth], largest class first.
     void packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed);
+    /// packRandom then settle into an empty slab, as `recipe` says; the recipe is kept and
+    /// saved with the state. Returns the settling time spent, s.
+    double packBed(const BedRecipe& recipe);
 
     void step(bool fluid);
     void advance(double dtOuter);
@@ -131,6 +135,12 @@ public:
     void save(const std::string& path) const;
     /// Reads a state written by save() with the same settings; throws dem::Error otherwise.
     void load(const std::string& path);
+    /// load(), after checking the file's bed against `recipe` (the file's recipe, or its
+    /// counts per class if it has none: then returns false); throws naming every entry that
+    /// differs, leaving this slab untouched.
+    bool loadBed(const std::string& path, const BedRecipe& recipe);
+    /// How the particles were made (packBed, or the file they came from); none otherwise.
+    const BedRecipe* recipe() const { return recipe_ ? &*recipe_ : nullptr; }
 
 private:
     void buildLaws();
@@ -160,6 +170,7 @@ private:
     std::size_t contactCount_ = 0;
     double maxOverlap_ = 0.0;
     double meanWeight_ = 1.0;
+    std::optional<BedRecipe> recipe_;
 };
 
 } // namespace dem

@@ -36,6 +36,15 @@ std::vector<Difference> compareRecipes(const BedRecipe& inFile, const BedRecipe&
 std::vector<Difference> compareCounts(const std::vector<int>& inFile, const std::vector<int>& here,
                                       const Settings& s);
 
+/// Throws unless a bed can be packed as `recipe` says into a simulation holding `particles`
+/// particles (it must be empty; settling time and tolerance finite and >= 0).
+void checkPackBed(std::size_t particles, const BedRecipe& recipe);
+
+/// What differs between a loaded bed and the recipe wanted here: the file's recipe against
+/// it if the file has one, else the particles' counts per class (`classIndex` of each).
+std::vector<Difference> compareBed(const BedRecipe* inFile, const std::vector<int>& classIndex,
+                                   const BedRecipe& here, const Settings& s);
+
 /// "a = 1 in the file, 2 here; b = ..." (empty if there is no difference).
 std::string describe(const std::vector<Difference>& differences);
 
