@@ -33,7 +33,6 @@ void BM_SolverBed(benchmark::State& state)
     if (const char* skin = std::getenv("DEM_BENCH_SKIN")) settings.neighbourSkin = std::atof(skin);
     auto sim = std::make_unique<dem::Simulation>(settings);
     sim->load(path);
-    const std::size_t n = sim->size();
     const std::int64_t builds0 = sim->neighbourListBuilds();
     const std::int64_t steps0 = sim->stepCount();
     long k = 0;
@@ -46,11 +45,7 @@ void BM_SolverBed(benchmark::State& state)
         sim->advance(dtCfd);
         ++k;
     }
-    const double steps = static_cast<double>(sim->stepCount() - steps0);
-    state.counters["particle_steps_per_s"] =
-        benchmark::Counter(static_cast<double>(n) * steps, benchmark::Counter::kIsRate);
-    state.counters["steps_per_list_build"] =
-        steps / static_cast<double>(std::max<std::int64_t>(1, sim->neighbourListBuilds() - builds0));
+    demBench::countStepsAndBuilds(state, *sim, steps0, builds0);
 }
 
 } // namespace
