@@ -5,6 +5,11 @@
 
 #include "dem/Facade.hpp"
 
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cstdint>
+
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -43,6 +48,18 @@ inline std::unique_ptr<dem::Simulation> settledBed(int threads)
     fresh->save(settledStatePath());
     sim->load(settledStatePath());
     return sim;
+}
+
+/// The counters every bed reports: particle-steps per second and DEM steps per list build
+/// since (steps0, builds0).
+inline void countStepsAndBuilds(benchmark::State& state, const dem::Simulation& sim,
+                                std::int64_t steps0, std::int64_t builds0)
+{
+    const double steps = static_cast<double>(sim.stepCount() - steps0);
+    state.counters["particle_steps_per_s"] = benchmark::Counter(
+        static_cast<double>(sim.size()) * steps, benchmark::Counter::kIsRate);
+    state.counters["steps_per_list_build"] =
+        steps / static_cast<double>(std::max<std::int64_t>(1, sim.neighbourListBuilds() - builds0));
 }
 
 } // namespace demBench

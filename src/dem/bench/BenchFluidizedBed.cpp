@@ -91,11 +91,7 @@ void BM_FluidizedBed(benchmark::State& state)
         contacts += sim->contactCount();
         ++k;
     }
-    const double steps = static_cast<double>(sim->stepCount() - steps0);
-    state.counters["particle_steps_per_s"] =
-        benchmark::Counter(static_cast<double>(n) * steps, benchmark::Counter::kIsRate);
-    state.counters["steps_per_list_build"] =
-        steps / static_cast<double>(std::max<std::int64_t>(1, sim->neighbourListBuilds() - builds0));
+    demBench::countStepsAndBuilds(state, *sim, steps0, builds0);
     state.counters["contacts_per_particle"] =
         static_cast<double>(contacts) / static_cast<double>(std::max(1L, k)) / static_cast<double>(n);
 }

@@ -35,12 +35,8 @@ void BM_SettledBed(benchmark::State& state)
     for (auto _ : state) {
         sim->advance(1e-4);   // one CFD step = 10 DEM steps
     }
-    const double steps = static_cast<double>(sim->stepCount() - steps0);
-    state.counters["particle_steps_per_s"] =
-        benchmark::Counter(static_cast<double>(n) * steps, benchmark::Counter::kIsRate);
+    demBench::countStepsAndBuilds(state, *sim, steps0, builds0);
     state.counters["bytes_per_particle"] = static_cast<double>(sim->memoryBytes()) / static_cast<double>(n);
-    state.counters["steps_per_list_build"] =
-        steps / static_cast<double>(std::max<std::int64_t>(1, sim->neighbourListBuilds() - builds0));
     state.counters["contacts_per_particle"] = static_cast<double>(sim->contactCount()) / static_cast<double>(n);
 }
 

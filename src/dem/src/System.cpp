@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include <omp.h>
+
 namespace dem {
 
 namespace {
@@ -24,7 +26,10 @@ double largestDiameter(const Settings& s)
 
 double resolvedSkin(const Settings& s)
 {
-    return s.neighbourSkin >= 0.0 ? s.neighbourSkin : 0.1 * smallestDiameter(s);
+    // 0.4 d_min: in the solver's bubbling bed the list is then rebuilt every ~25 steps
+    // instead of ~7 (0.1 d_min), which saves more than the extra candidate pairs cost
+    // (BM_SolverBed, docs/performance.md, session 9)
+    return s.neighbourSkin >= 0.0 ? s.neighbourSkin : 0.4 * smallestDiameter(s);
 }
 
 const Settings& validated(const Settings& s)
@@ -305,6 +310,7 @@ void System::computePairForces(double historyDt)
     double* sumFt = p_.torque.data();
     const std::size_t n = p_.size();
 
+    // A touching pair (found by the group's first pass)
     auto pairForce = [&](Index k, std::size_t& touching, double& maxOverlap) {
         const int i = pi[k];
         const int j = pj[k];
@@ -312,10 +318,6 @@ void System::computePairForces(double historyDt)
         const double dy = y[j] - y[i];
         const double d2 = dx * dx + dy * dy;
         const double rSum = r[i] + r[j];
-        if (d2 >= rSum * rSum) {
-            xiT[k] = 0.0;   // separated: the contact's history ends
-            return;
-        }
         const double dist = std::sqrt(d2);
         const double invDist = 1.0 / dist;
         PairGeometry g;
@@ -341,8 +343,26 @@ void System::computePairForces(double historyDt)
     // Groups that share no particle run in parallel: the blocks, then the boundaries
     // between even and odd blocks, then between odd and even ones; the rest on one thread.
     // A particle gets its forces in the same order whatever the thread count.
+    // Two passes per group: the touching pairs picked out without a branch (most candidates
+    // do not touch, and a branch per pair mispredicts), then their forces in list order.
+    touchingScratch_.resize(pairs_.size());   // (a loaded state's list has no build here)
+    int* touchingPairs = touchingScratch_.data();
     auto group = [&](int g, std::size_t& touching, double& maxOverlap) {
-        for (Index k = groupStart[g]; k < groupStart[g + 1]; ++k) pairForce(k, touching, maxOverlap);
+        int* picked = touchingPairs + groupStart[g];
+        int m = 0;
+        for (int k = groupStart[g]; k < groupStart[g + 1]; ++k) {
+            const int i = pi[k];
+            const int j = pj[k];
+            const double dx = x[j] - x[i];
+            const double dy = y[j] - y[i];
+            const double rSum = r[i] + r[j];
+            const bool touch = !(dx * dx + dy * dy >= rSum * rSum);   // NaN counts as touching
+            picked[m] = k;
+            m += touch;
+            const double xi = xiT[k];
+            xiT[k] = touch ? xi : 0.0;   // separated: the contact's history ends
+        }
+        for (int q = 0; q < m; ++q) pairForce(picked[q], touching, maxOverlap);
     };
     std::size_t touching = 0;
     double maxOverlap = 0.0;
@@ -383,69 +403,127 @@ void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
     const PlaneWall* walls = walls_.data();
     const ContactLaw* wallLaws = wallLaws_.data();
     Particles& p = p_;
+    // Plain pointers: the kick loop below is a simd loop, which needs no alias checks.
+    double* fxA = p.fx.data();
+    double* fyA = p.fy.data();
+    double* torqueA = p.torque.data();
+    const double* radius = p.radius.data();
 
     std::size_t touching = 0;
     double maxOverlap = maxOverlap_;
-#pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
-    reduction(+ : touching) reduction(max : maxOverlap)
-    for (Index i = 0; i < n; ++i) {
-        // The pair sums of computePairForces (p.torque: the tangential forces)
-        double fx = p.fx[i], fy = p.fy[i];
-        const double ft = p.torque[i];
-        const double ri = p.radius[i];
-        double torque = ri * ft;
-        for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
-            const PlaneWall& w = walls[wWall[s]];
-            const Eigen::Vector2d pos(p.x[i], p.y[i]);
-            const double overlap = ri - w.distance(pos);
-            if (overlap <= 0.0) {
-                wXi[s] = 0.0;
-                continue;
+#pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
+    reduction(max : maxOverlap)
+    {
+        // Each thread its own range of particles, for both loops (no barrier between).
+        // The few particles with wall candidates first: their wall forces are added to the
+        // pair sums in wall order, and their torque made whole (r ft + wall torques); then
+        // every particle's kick, in a loop the compiler vectorises.
+        const Index nThreads = omp_get_num_threads();
+        const Index thread = omp_get_thread_num();
+        const Index first = n * thread / nThreads;
+        const Index last = n * (thread + 1) / nThreads;
+        for (Index i = first; i < last; ++i) {
+            if (wStart[i] == wStart[i + 1]) continue;
+            double fx = fxA[i], fy = fyA[i];
+            const double ri = radius[i];
+            double torque = ri * torqueA[i];
+            for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
+                const PlaneWall& w = walls[wWall[s]];
+                const Eigen::Vector2d pos(p.x[i], p.y[i]);
+                const double overlap = ri - w.distance(pos);
+                if (overlap <= 0.0) {
+                    wXi[s] = 0.0;
+                    continue;
+                }
+                PairGeometry g;
+                g.overlap = overlap;
+                g.nHat = -w.nHat;
+                const Eigen::Vector2d tHat(-g.nHat.y(), g.nHat.x());
+                g.vRel = Eigen::Vector2d(p.vx[i], p.vy[i]) + p.omega[i] * ri * tHat;
+                g.rI = ri;
+                g.rJ = 0.0;
+                g.xiT = wXi[s];
+                const PairForce f = contactForce(g, wallLaws[p.classIndex[i]], historyDt);
+                fx += f.force.x();
+                fy += f.force.y();
+                torque += f.torqueI;
+                wXi[s] = f.xiT;
+                ++touching;
+                maxOverlap = std::max(maxOverlap, overlap);
             }
-            PairGeometry g;
-            g.overlap = overlap;
-            g.nHat = -w.nHat;
-            const Eigen::Vector2d tHat(-g.nHat.y(), g.nHat.x());
-            g.vRel = Eigen::Vector2d(p.vx[i], p.vy[i]) + p.omega[i] * ri * tHat;
-            g.rI = ri;
-            g.rJ = 0.0;
-            g.xiT = wXi[s];
-            const PairForce f = contactForce(g, wallLaws[p.classIndex[i]], historyDt);
-            fx += f.force.x();
-            fy += f.force.y();
-            torque += f.torqueI;
-            wXi[s] = f.xiT;
-            ++touching;
-            maxOverlap = std::max(maxOverlap, overlap);
+            fxA[i] = fx;
+            fyA[i] = fy;
+            torqueA[i] = torque;
         }
-        p.fx[i] = fx;
-        p.fy[i] = fy;
-        p.torque[i] = torque;
-        if (!kick) continue;
-
-        const double invM = p.invMass[i];
-        if (fluid) {
-            // Second half-kick with the drag implicit: v = v_half + h (F + K (u - v) + extra)/m.
-            const double K = p.dragCoefficient[i];
-            const double denominator = 1.0 + h * K * invM;
-            const double vxNew = (p.vx[i] + h * ((fx + K * p.gasVx[i] + p.extraFx[i]) * invM + gx))
-                                 / denominator;
-            const double vyNew = (p.vy[i] + h * ((fy + K * p.gasVy[i] + p.extraFy[i]) * invM + gy))
-                                 / denominator;
-            p.vx[i] = vxNew;
-            p.vy[i] = vyNew;
-            p.fluidX[i] = K * (p.gasVx[i] - vxNew) + p.extraFx[i];
-            p.fluidY[i] = K * (p.gasVy[i] - vyNew) + p.extraFy[i];
-            p.meanVx[i] += weight * vxNew;
-            p.meanVy[i] += weight * vyNew;
+        if (kick && fluid) {
+            kickLoop<true>(first, last, h, gx, gy, weight);
+        } else if (kick) {
+            kickLoop<false>(first, last, h, gx, gy, weight);
         } else {
-            p.vx[i] += h * (fx * invM + gx);
-            p.vy[i] += h * (fy * invM + gy);
+#pragma omp simd
+            for (Index i = first; i < last; ++i) {
+                // p.torque held the sum of tangential forces until now (none if walls)
+                const double ri = radius[i];
+                torqueA[i] *= wStart[i] == wStart[i + 1] ? ri : 1.0;
+            }
         }
-        p.omega[i] += h * torque * p.invInertia[i];
     }
     contactCount_ += touching;
     maxOverlap_ = maxOverlap;
+}
+
+template <bool Fluid>
+void System::kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, double gx, double gy,
+                      double weight)
+{
+    Particles& p = p_;
+    const int* wStart = wallContacts_.start.data();
+    const double* fx = p.fx.data();
+    const double* fy = p.fy.data();
+    double* torqueA = p.torque.data();
+    const double* radius = p.radius.data();
+    const double* invMass = p.invMass.data();
+    const double* invInertia = p.invInertia.data();
+    const double* dragK = p.dragCoefficient.data();
+    const double* gasVx = p.gasVx.data();
+    const double* gasVy = p.gasVy.data();
+    const double* extraFx = p.extraFx.data();
+    const double* extraFy = p.extraFy.data();
+    double* vx = p.vx.data();
+    double* vy = p.vy.data();
+    double* omega = p.omega.data();
+    double* fluidX = p.fluidX.data();
+    double* fluidY = p.fluidY.data();
+    double* meanVx = p.meanVx.data();
+    double* meanVy = p.meanVy.data();
+#pragma omp simd
+    for (Index i = first; i < last; ++i) {
+        // Particles with walls have their whole torque already (the loop before): a factor
+        // of 1 keeps it exactly, and a select of loaded values vectorises
+        const double ri = radius[i];
+        const double torque = (wStart[i] == wStart[i + 1] ? ri : 1.0) * torqueA[i];
+        torqueA[i] = torque;
+        const double invM = invMass[i];
+        if constexpr (Fluid) {
+            // Second half-kick with the drag implicit: v = v_half + h (F + K (u - v) + extra)/m.
+            const double K = dragK[i];
+            const double denominator = 1.0 + h * K * invM;
+            const double vxNew = (vx[i] + h * ((fx[i] + K * gasVx[i] + extraFx[i]) * invM + gx))
+                                 / denominator;
+            const double vyNew = (vy[i] + h * ((fy[i] + K * gasVy[i] + extraFy[i]) * invM + gy))
+                                 / denominator;
+            vx[i] = vxNew;
+            vy[i] = vyNew;
+            fluidX[i] = K * (gasVx[i] - vxNew) + extraFx[i];
+            fluidY[i] = K * (gasVy[i] - vyNew) + extraFy[i];
+            meanVx[i] += weight * vxNew;
+            meanVy[i] += weight * vyNew;
+        } else {
+            vx[i] += h * (fx[i] * invM + gx);
+            vy[i] += h * (fy[i] * invM + gy);
+        }
+        omega[i] += h * torque * invInertia[i];
+    }
 }
 
 void System::step(bool fluid)
@@ -461,7 +539,7 @@ void System::step(bool fluid)
 
     double maxDisplacement2 = 0.0;
     int lost = 0;
-#pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
+#pragma omp parallel for simd num_threads(settings_.nThreads) schedule(static) \
     reduction(max : maxDisplacement2) reduction(| : lost)
     for (Index i = 0; i < n; ++i) {
         const double invM = p.invMass[i];
@@ -588,6 +666,7 @@ std::size_t System::memoryBytes() const
                         + found_.capacity() * sizeof(IndexPair);
     auto add = [&](const auto& a) { bytes += a.capacity() * sizeof(a[0]); };
     add(pairs_.i); add(pairs_.j); add(pairs_.law); add(pairs_.xiT); add(pairs_.groupStart);
+    add(touchingScratch_);
     add(wallContacts_.start); add(wallContacts_.wall); add(wallContacts_.xiT);
     return bytes;
 }

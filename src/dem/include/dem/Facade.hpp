@@ -46,7 +46,8 @@ struct Settings {
     double gravity[2] = {0.0, -9.81};  ///< m/s^2
     double dt = 1e-5;                  ///< DEM step, s
     int nThreads = 1;
-    /// Verlet skin of the neighbour list built by NBS, m; < 0 means 0.1 x smallest diameter.
+    /// Verlet skin of the neighbour list built by NBS, m; < 0 means 0.4 x smallest diameter
+    /// (the slab engine: 0.1).
     double neighbourSkin = -1.0;
     /// 2: discs in the x-y plane (the paper's model); 3: spheres in a slab between a front
     /// wall z = 0 and a back wall z = slabDepth, with the box's walls around (docs/model.md,

@@ -11,6 +11,7 @@
 #include "dem/PlaneWall.hpp"
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -86,6 +87,10 @@ private:
     /// Adds the wall contacts to the pair sums and does the second half-kick (kick = false:
     /// only the forces, for the first evaluation).
     void addWallForcesAndKick(double historyDt, bool kick, bool fluid);
+    /// The second half-kick of particles [first, last).
+    template <bool Fluid>
+    void kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, double gx, double gy,
+                  double weight);
     void setFluidForceAtCurrentVelocity(bool fluid);
     [[noreturn]] void throwLostParticle() const;
     const ContactLaw& pairLaw(int ci, int cj) const { return pairLaws_[ci * nClasses_ + cj]; }
@@ -103,6 +108,7 @@ private:
     NbsSearch search_;
     std::vector<IndexPair> found_;       // scratch of the search
     std::vector<int> rebuildScratch_;    // where each found pair goes in the list
+    std::vector<int> touchingScratch_;   // the touching pairs of each group, per step
 
     std::int64_t stepCount_ = 0;
     std::int64_t listBuilds_ = 0;
