@@ -110,8 +110,9 @@ dem::Settings Foam::dpmCloud::demSettings() const
     s.dt = dict_.get<scalar>("deltaT");
     s.nThreads = dict_.lookupOrDefault<label>("nThreads", 1);
 
-    // Verlet skin of the neighbour list (default: the DEM's 0.1 d_min): a
-    // wider skin means fewer list builds but more candidate pairs each step
+    // Verlet skin of the neighbour list (default: the DEM's, 0.4 d_min for
+    // discs, 0.1 d_min in the slab): a wider skin means fewer list builds
+    // but more candidate pairs each step (docs/performance.md, session 9)
     if (dict_.found("neighbourSkin"))
     {
         scalar dMin = GREAT;
