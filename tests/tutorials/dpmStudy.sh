@@ -23,7 +23,9 @@
 #   7. -variant upwind: the case's fvSchemes edited, the edits recorded in
 #      constant/variant and results/variants.md; a rerun from that record
 #      makes the same case; a changed variant file, an unknown variant and
-#      a variant naming an entry the template lacks are refused;
+#      a variant naming an entry the template lacks are refused; upwind (the
+#      gas's numerics) starts from the template's bed, a variant of the
+#      particles' friction from a bed of its own packed with its edit;
 #   8. a case that a second dpmStudy started while the first was busy is
 #      skipped by the first when its turn comes (not run twice).
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
@@ -180,7 +182,18 @@ dpmStudy rerun "${short[@]}" -j 1 -variant "$PWD/$vcase/constant/variant" > log.
     || { cat log.rerun; fail "rerun from the record"; }
 diff -r -q $vcase/system rerun/w0.50_64bar_upwind/system || fail "the rerun's dictionaries differ"
 cmp $vcase/constant/variant rerun/w0.50_64bar_upwind/constant/variant || fail "the rerun's record differs"
-mkdir -p changed && sed 's/Gauss upwind/Gauss linearUpwind grad(U)/' \
+grep -q '/beds/w0.50/constant/packedBed.state' $vcase/constant/packedBed \
+    || fail "the gas-only variant upwind did not start from the template's bed"
+mkdir -p changed && echo "constant/particleProperties contact/frictionParticle 0.3" > changed/friction
+dpmStudy variants "${short[@]}" -j 1 -variant "$PWD/changed/friction" > log.friction 2>&1 \
+    || { cat log.friction; fail "dpmStudy -variant friction"; }
+fbed=variants/beds/w0.50_friction
+[ -f $fbed/constant/packedBed.state ] || fail "a variant of the particles packed no bed of its own"
+[ "$(foamDictionary -entry contact/frictionParticle -value $fbed/constant/particleProperties)" = 0.3 ] \
+    || fail "the variant's own bed was packed without its edit"
+grep -q '/beds/w0.50_friction/constant/packedBed.state' variants/w0.50_64bar_friction/constant/packedBed \
+    || fail "the variant's case does not start from its own bed"
+sed 's/Gauss upwind/Gauss linearUpwind grad(U)/' \
     "$DPMFOAM2D_PROJECT/tutorials/paperStudy/variants/upwind" > changed/upwind
 dpmStudy variants "${short[@]}" -variant "$PWD/changed/upwind" > log.changed 2>&1 \
     && fail "a changed variant file was accepted"
