@@ -193,6 +193,8 @@ fbed=variants/beds/w0.50_friction
     || fail "the variant's own bed was packed without its edit"
 grep -q '/beds/w0.50_friction/constant/packedBed.state' variants/w0.50_64bar_friction/constant/packedBed \
     || fail "the variant's case does not start from its own bed"
+grep -q "Particles: packing" variants/w0.50_64bar_friction/log.dpmFoam2D \
+    && fail "the variant's case packed a bed instead of loading its own (an edit of particleProperties dropped the packedBed include)"
 sed 's/Gauss upwind/Gauss linearUpwind grad(U)/' \
     "$DPMFOAM2D_PROJECT/tutorials/paperStudy/variants/upwind" > changed/upwind
 dpmStudy variants "${short[@]}" -variant "$PWD/changed/upwind" > log.changed 2>&1 \
