@@ -275,9 +275,7 @@ Foam::dpmCloud::dpmCloud
     const dem::Settings settings = demSettings();
     // The voidage model's own check first (slab3D: the spheres fit in the
     // slab), in its words rather than the DEM's
-    scalarList diameters(settings.classes.size());
-    forAll(diameters, k) diameters[k] = settings.classes[k].diameter;
-    voidageModel_->checkDiameters(dict_, diameters);
+    voidageModel_->checkDiameters(dict_, diametersOf(settings));
     guarded
     (
         "Invalid particle settings",
@@ -364,11 +362,17 @@ Foam::scalarList Foam::dpmCloud::massFractions() const
 }
 
 
+Foam::scalarList Foam::dpmCloud::diametersOf(const dem::Settings& settings)
+{
+    scalarList d(settings.classes.size());
+    forAll(d, k) d[k] = settings.classes[k].diameter;
+    return d;
+}
+
+
 Foam::scalarList Foam::dpmCloud::classDiameters() const
 {
-    scalarList d(classNames_.size());
-    forAll(d, k) d[k] = dem_->settings().classes[k].diameter;
-    return d;
+    return diametersOf(dem_->settings());
 }
 
 
