@@ -1,7 +1,7 @@
 /*---------------------------------------------------------------------------*\
     dpmCloud: the checks of its settings that go beyond one entry's range
     (unknown entries, gravity, the gas against the particles, threads, the
-    particle output interval), and the terminal velocity of a class.
+    particle output interval).
 \*---------------------------------------------------------------------------*/
 
 #include "dpmCloud.H"
@@ -118,43 +118,6 @@ bool Foam::dpmCloud::hasParticleStates() const
         }
     }
     return false;
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::scalar Foam::dpmCloud::terminalVelocity
-(
-    const label classi,
-    const scalar g
-) const
-{
-    // The slip at which the drag of the case's model on a lone particle
-    // (voidage 1) carries its weight less the buoyancy; the drag K(s) s
-    // grows with the slip s, so bisect
-    const scalar d = dem_->settings().classes[classi].diameter;
-    const scalar rhoP = dem_->settings().classes[classi].density;
-    const scalar weight =
-        (rhoP - rhoGas_)*constant::mathematical::pi*pow3(d)/6*g;
-    if (!(weight > 0)) return 0;
-
-    const scalarField voidage(1, 1.0), diameter(1, d);
-    particleMixture alone;          // its own diameter is the mixture's
-    alone.sauterDiameter = diameter;
-    auto drag = [&](const scalar slip)
-    {
-        scalarField K(1);
-        drag_->dragCoefficient(voidage, diameter, scalarField(1, slip), alone, K);
-        return K[0]*slip;
-    };
-    scalar lower = 0, upper = 1;
-    while (drag(upper) < weight && upper < 1e6) upper *= 2;
-    for (int i = 0; i < 100 && upper - lower > 1e-10*upper; ++i)
-    {
-        const scalar mid = 0.5*(lower + upper);
-        (drag(mid) < weight ? lower : upper) = mid;
-    }
-    return 0.5*(lower + upper);
 }
 
 

@@ -1,0 +1,160 @@
+/*---------------------------------------------------------------------------*\
+Application
+    dpmUmf
+
+Description
+    The minimum fluidization velocities of a case's particles with the
+    case's own drag model (constant/particleProperties, dragModel) and gas
+    (constant/gasProperties), beside the Wen-Yu Umf that sets the solver's
+    inlet velocity U0. Each is a force balance on resting particles in a
+    uniform bed of a given voidage (the 3D voidage the drag sees):
+
+    - the mixture's Umf: the drag on all particles (the dictionary's counts
+      per class) carries the bed's weight less buoyancy; U0/Umf with it
+      says how far above its own Umf the case's bed is fluidized;
+    - each class in the mixture: the velocity at which the drag on one of
+      its particles carries its weight less its share of the bed's
+      pressure gradient. A class whose velocity is below the mixture's is
+      lifted by the gas at Umf, one above it sinks: the ratio of the two
+      classes' velocities is the drag model's size contrast, which drives
+      segregation (a polydisperse closure such as Beetstra's narrows it);
+    - each class alone (a bed of that size only), and the terminal velocity
+      of a lone particle.
+
+    The balances are formulation B's (the drag carries each particle's
+    weight less buoyancy), which formulation A matches for classes of one
+    density. Nothing is written; the mesh is read only because the particles'
+    settings are checked against it as for a run. No bed is packed or read.
+
+Usage
+    dpmUmf [-voidage '(0.4 0.45 0.5)']
+
+    -voidage <list>  voidages of the bed, each in (0, 1) (default (0.4 0.45
+                     0.5): the emulsion of the paper's beds is 0.43-0.49 in
+                     dpmBedStatistics)
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "gasProperties.H"
+#include "dpmCloud.H"
+#include "fluidization.H"
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Minimum fluidization velocities of the case's particles with its"
+        " drag model, against the Wen-Yu Umf of the solver's inlet"
+    );
+    argList::noParallel();
+    argList::addOption
+    (
+        "voidage",
+        "list",
+        "Voidages of the bed, each in (0, 1) (default '(0.4 0.45 0.5)')"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "readGravitationalAcceleration.H"
+    Sout.precision(8);
+
+    scalarList voidages({0.4, 0.45, 0.5});
+    args.readListIfPresent<scalar>("voidage", voidages);
+    for (const scalar eps : voidages)
+    {
+        if (!(eps > 0 && eps < 1))
+        {
+            FatalErrorInFunction
+                << "Option -voidage: " << eps << " is not a voidage; allowed:"
+                << " each value in (0, 1)" << exit(FatalError);
+        }
+    }
+
+    gasProperties gas(mesh);
+    const dpmCloud particles        // no particles: only the settings
+    (
+        "particles", mesh, gas, g.value(), dpmCloud::startMode::pack
+    );
+    const scalar gMag = mag(g.value());
+    const wordList& names = particles.classNames();
+    const std::vector<int> n(particles.classCounts());
+    const scalarList d(particles.classDiameters());
+    const scalarList rho(particles.classDensities());
+
+    // The solver's inlet: Wen-Yu for the dictionary's mixture
+    scalarList w(d.size());
+    scalar mass = 0, volume = 0;
+    forAll(d, k)
+    {
+        const scalar V = n[k]*constant::mathematical::pi*pow3(d[k])/6;
+        w[k] = rho[k]*V;
+        mass += w[k];
+        volume += V;
+    }
+    forAll(w, k) w[k] /= mass;
+    const scalar dMix = fluidization::harmonicMeanDiameter(w, d);
+    const scalar wenYu =
+        fluidization::wenYuUmf(dMix, mass/volume, gas.rho(), gas.mu(), gMag);
+    const scalar U0 = gas.U0(wenYu);
+
+    const dictionary& dict =
+        mesh.lookupObject<IOdictionary>("particleProperties");
+    Info<< nl << "Drag model " << dict.get<word>("dragModel")
+        << "; gas density " << gas.rho() << " kg/m3, viscosity " << gas.mu()
+        << " Pa s; g " << gMag << " m/s2" << nl << "Mixture (the dictionary's"
+        << " counts):";
+    forAll(names, k)
+    {
+        Info<< ' ' << names[k] << ' ' << n[k] << " x " << d[k]*1e3 << " mm"
+            << " (mass fraction " << w[k] << ')';
+    }
+    Info<< nl << "Wen-Yu Umf " << wenYu << " m/s (harmonic mean diameter "
+        << dMix*1e3 << " mm); U0 " << U0 << " m/s ("
+        << gas.U0Setting().c_str() << ")" << nl << nl
+        << "Superficial gas velocity [m/s] whose drag carries, in a bed of"
+        << " the voidage:" << nl << "voidage" << "  Umf(mixture)" << "  U0/Umf";
+    forAll(names, k) Info<< "  " << names[k] << "(in mixture)";
+    forAll(names, k) Info<< "  " << names[k] << "(alone)";
+    Info<< nl;
+
+    for (const scalar eps : voidages)
+    {
+        const scalar Umf = particles.mixtureUmf(eps, gMag);
+        Info<< eps << "  " << Umf << "  " << U0/Umf;
+        forAll(names, k)
+        {
+            Info<< "  " << particles.carryingVelocity(k, eps, gMag);
+        }
+        forAll(names, k)
+        {
+            Info<< "  " << particles.carryingVelocityAlone(k, eps, gMag);
+        }
+        Info<< nl;
+    }
+
+    if
+    (
+        particles.formulation() == couplingFormulation::A
+     && max(rho) > min(rho)
+    )
+    {
+        Info<< nl << "Note: formulation A with classes of different densities:"
+            << " their shares of the bed's pressure gradient differ, which"
+            << " these balances (formulation B's) leave out" << nl;
+    }
+
+    Info<< nl << "Terminal velocity [m/s]:";
+    forAll(names, k)
+    {
+        Info<< ' ' << names[k] << ' ' << particles.terminalVelocity(k, gMag);
+    }
+    Info<< nl << nl << "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

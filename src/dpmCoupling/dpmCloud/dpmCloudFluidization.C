@@ -1,0 +1,168 @@
+/*---------------------------------------------------------------------------*\
+    dpmCloud: the gas velocities at which the case's drag model carries its
+    particles - a lone particle (terminal velocity), a class in a uniform
+    bed of the dictionary's mixture or alone, and the whole mixture
+    (minimum fluidization velocity). Every one is a force balance on
+    resting particles, solved by bisection since the drag grows with the
+    gas velocity.
+
+    The drag models give formulation B's coefficient (the gas sees the
+    whole pressure gradient, the particles only the drag and the buoyancy):
+    at rest in a bed carried by the gas, the drag on each particle carries
+    its weight less buoyancy, V_k (rho_k - rho_g) g, at the interstitial
+    slip U/eps. Formulation A (drag eps_g K_B plus -V_k grad p) gives the
+    same balance for classes of one density; for classes of different
+    densities their share of the bed's pressure gradient would differ, and
+    that is not computed here. The voidage is the one the drag sees.
+\*---------------------------------------------------------------------------*/
+
+#include "dpmCloud.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::dpmCloud::restingDrag
+(
+    const scalar eps,
+    const scalar d,
+    const scalar dMean,
+    const scalar U
+) const
+{
+    const scalarField voidage(1, eps), diameter(1, d);
+    particleMixture mixture;
+    mixture.sauterDiameter = scalarField(1, dMean);
+    scalarField K(1);
+    // The particle rests: the slip is the interstitial velocity U/eps
+    drag_->dragCoefficient(voidage, diameter, scalarField(1, U/eps), mixture, K);
+    return K[0]*U/eps;
+}
+
+
+Foam::scalar Foam::dpmCloud::velocityCarrying
+(
+    const scalar eps,
+    const scalarList& weights,
+    const scalar dMean,
+    const scalar load
+) const
+{
+    if (!(load > 0)) return 0;
+
+    const scalarList d(classDiameters());
+    auto drag = [&](const scalar U)
+    {
+        scalar F = 0;
+        forAll(weights, k)
+        {
+            if (weights[k] > 0) F += weights[k]*restingDrag(eps, d[k], dMean, U);
+        }
+        return F;
+    };
+    scalar lower = 0, upper = 1;
+    while (drag(upper) < load && upper < 1e6) upper *= 2;
+    for (int i = 0; i < 200 && upper - lower > 1e-12*upper; ++i)
+    {
+        const scalar mid = 0.5*(lower + upper);
+        (drag(mid) < load ? lower : upper) = mid;
+    }
+    return 0.5*(lower + upper);
+}
+
+
+Foam::scalar Foam::dpmCloud::buoyantWeight
+(
+    const label classi,
+    const scalar g
+) const
+{
+    const scalar d = classDiameters()[classi];
+    return
+        constant::mathematical::pi*pow3(d)/6
+       *(classDensities()[classi] - rhoGas_)*g;
+}
+
+
+Foam::scalarList Foam::dpmCloud::unitWeight(const label classi) const
+{
+    scalarList w(classNames_.size(), Zero);
+    w[classi] = 1;
+    return w;
+}
+
+
+Foam::scalar Foam::dpmCloud::recipeSauterDiameter() const
+{
+    const std::vector<int> n(classCounts());
+    const scalarList d(classDiameters());
+    scalar sum3 = 0, sum2 = 0;
+    forAll(d, k)
+    {
+        sum3 += n[k]*pow3(d[k]);
+        sum2 += n[k]*sqr(d[k]);
+    }
+    return sum3/sum2;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::dpmCloud::terminalVelocity
+(
+    const label classi,
+    const scalar g
+) const
+{
+    // Voidage 1: its own diameter is the mixture's
+    return velocityCarrying
+    (
+        1, unitWeight(classi), classDiameters()[classi],
+        buoyantWeight(classi, g)
+    );
+}
+
+
+Foam::scalar Foam::dpmCloud::carryingVelocity
+(
+    const label classi,
+    const scalar eps,
+    const scalar g
+) const
+{
+    return velocityCarrying
+    (
+        eps, unitWeight(classi), recipeSauterDiameter(), buoyantWeight(classi, g)
+    );
+}
+
+
+Foam::scalar Foam::dpmCloud::carryingVelocityAlone
+(
+    const label classi,
+    const scalar eps,
+    const scalar g
+) const
+{
+    return velocityCarrying
+    (
+        eps, unitWeight(classi), classDiameters()[classi],
+        buoyantWeight(classi, g)
+    );
+}
+
+
+Foam::scalar Foam::dpmCloud::mixtureUmf(const scalar eps, const scalar g) const
+{
+    const std::vector<int> n(classCounts());
+    scalarList counts(n.size());
+    scalar load = 0;
+    forAll(counts, k)
+    {
+        counts[k] = n[k];
+        load += n[k]*buoyantWeight(k, g);
+    }
+    return velocityCarrying(eps, counts, recipeSauterDiameter(), load);
+}
+
+
+// ************************************************************************* //
