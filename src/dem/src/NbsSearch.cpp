@@ -47,8 +47,14 @@ void CellMapper::unlinkColumns(int r, const double* x, std::vector<int>& heads) 
 }
 
 NbsSearch::NbsSearch(double xMin, double xMax, double yMin, double yMax, double minCellSize)
-    : mapper_(xMin, xMax, yMin, yMax, minCellSize)
+    : xMin_(xMin), xMax_(xMax), yMin_(yMin), yMax_(yMax),
+      mapper_(xMin, xMax, yMin, yMax, minCellSize)
 {
+}
+
+void NbsSearch::setMinCellSize(double minCellSize)
+{
+    mapper_ = CellMapper(xMin_, xMax_, yMin_, yMax_, minCellSize);
 }
 
 template <bool Is3D>

@@ -24,12 +24,20 @@ double largestDiameter(const Settings& s)
     return d;
 }
 
+// The adaptive skin (Settings::neighbourSkin < 0): chosen at each build so that the next
+// build comes about skinTargetInterval steps later, judged by the fastest particle since
+// the last build, within [0.1, 0.8] d_min. In the solver's bubbling bed a fixed 0.4 d_min
+// (a build every ~25 steps) beat 0.1 d_min (every ~7) by 30 %, while a bed at rest lost 30 %
+// to the extra candidates (docs/performance.md, sessions 9 and 10).
+constexpr double skinTargetInterval = 25.0;     // DEM steps between builds
+constexpr std::int64_t skinRecheckAfter = 100;  // steps without a build: build, to narrow
+constexpr double skinMinFraction = 0.1;         // of d_min
+constexpr double skinMaxFraction = 0.8;
+constexpr double skinStartFraction = 0.4;
+
 double resolvedSkin(const Settings& s)
 {
-    // 0.4 d_min: in the solver's bubbling bed the list is then rebuilt every ~25 steps
-    // instead of ~7 (0.1 d_min), which saves more than the extra candidate pairs cost
-    // (BM_SolverBed, docs/performance.md, session 9)
-    return s.neighbourSkin >= 0.0 ? s.neighbourSkin : 0.4 * smallestDiameter(s);
+    return s.neighbourSkin >= 0.0 ? s.neighbourSkin : skinStartFraction * smallestDiameter(s);
 }
 
 const Settings& validated(const Settings& s)
@@ -52,6 +60,10 @@ System::System(const Settings& settings)
       nClasses_(static_cast<int>(settings.classes.size())),
       timeStepBound_(dem::timeStepBound(settings)),
       skin_(resolvedSkin(settings)),
+      adaptiveSkin_(settings.neighbourSkin < 0.0),
+      skinMin_(adaptiveSkin_ ? skinMinFraction * smallestDiameter(settings) : skin_),
+      skinMax_(adaptiveSkin_ ? skinMaxFraction * smallestDiameter(settings) : skin_),
+      largestDiameter_(largestDiameter(settings)),
       walls_(boxWalls(settings.box)),
       search_(settings.box.xMin, settings.box.xMax, settings.box.yMin, settings.box.yMax,
               largestDiameter(settings) + resolvedSkin(settings))
@@ -218,6 +230,25 @@ void System::rebuildNeighbourList()
     p_.yRef = p_.y;
     listValid_ = true;
     ++listBuilds_;
+    lastBuildStep_ = stepCount_;
+}
+
+void System::adaptSkin(double maxDisplacement2)
+{
+    const std::int64_t interval = stepCount_ - lastBuildStep_;   // drifts since the build
+    if (lastBuildStep_ < 0 || interval < 1) return;   // no build to judge by: keep it
+    // The fastest particle moved sqrt(maxDisplacement2) in `interval` steps; a skin of
+    // 2 v T lasts about T steps at that speed. At most a factor 2 per build either way.
+    const double perStep = std::sqrt(maxDisplacement2) / static_cast<double>(interval);
+    const double wanted = 2.0 * skinTargetInterval * perStep;
+    const double next = std::clamp(std::clamp(wanted, 0.5 * skin_, 2.0 * skin_), skinMin_, skinMax_);
+    if (next != skin_) setSkin(next);
+}
+
+void System::setSkin(double skin)
+{
+    skin_ = skin;
+    search_.setMinCellSize(largestDiameter_ + skin);
 }
 
 void System::sortByCell()
@@ -557,7 +588,14 @@ void System::step(bool fluid)
     if (lost) throwLostParticle();
 
     // Rebuild once some particle may have closed half the skin: no contact can be missed.
-    if (4.0 * maxDisplacement2 >= skin_ * skin_) rebuildNeighbourList();
+    // An adaptive skin above its minimum is also rebuilt (narrower) when it lasts long.
+    const bool due = 4.0 * maxDisplacement2 >= skin_ * skin_;
+    const bool tooWide = adaptiveSkin_ && skin_ > skinMin_ && lastBuildStep_ >= 0
+                         && stepCount_ - lastBuildStep_ >= skinRecheckAfter;
+    if (due || tooWide) {
+        if (adaptiveSkin_) adaptSkin(maxDisplacement2);
+        rebuildNeighbourList();
+    }
 
     computePairForces(dt);
     addWallForcesAndKick(dt, true, fluid);

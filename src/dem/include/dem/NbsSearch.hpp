@@ -21,6 +21,9 @@ public:
     /// Search grid over the rectangle, cells no smaller than the largest diameter + margin.
     NbsSearch(double xMin, double xMax, double yMin, double yMax, double minCellSize);
 
+    /// The same rectangle with cells no smaller than minCellSize (an adaptive skin's).
+    void setMinCellSize(double minCellSize);
+
     /// All pairs with |x_j - x_i| < r_i + r_j + margin, i < j, in a fixed order (the walk's),
     /// replacing the contents of `pairs`. Requires 2 r_max + margin <= cell size.
     /// Rows are walked by up to nThreads threads in bands and the bands' pairs joined in
@@ -55,6 +58,7 @@ private:
     void find(const double* x, const double* y, const double* z, const double* r, std::size_t n,
               double margin, std::vector<IndexPair>& pairs, int nThreads);
 
+    double xMin_, xMax_, yMin_, yMax_;
     CellMapper mapper_;
     std::vector<Band> bands_;
     std::vector<int> rowCount_;

@@ -70,6 +70,8 @@ public:
     std::size_t contactCount() const { return contactCount_; }
     double maxOverlap() const { return maxOverlap_; }
     std::int64_t neighbourListBuilds() const { return listBuilds_; }
+    /// The Verlet skin of the current neighbour list, m.
+    double neighbourSkin() const { return skin_; }
     std::size_t memoryBytes() const;
 
     void save(const std::string& path) const;
@@ -80,6 +82,11 @@ public:
 private:
     void buildLaws();
     void rebuildNeighbourList();
+    /// The adaptive skin's choice before a build in step(): from the fastest particle's
+    /// displacement since the last build (maxDisplacement2, m^2).
+    void adaptSkin(double maxDisplacement2);
+    /// Sets the skin and the search cells that fit it.
+    void setSkin(double skin);
     void ensureReady();
     /// Sums each particle's pair forces (parallel over blocks of pairs, each pair once, in
     /// an order that does not depend on the thread count).
@@ -99,6 +106,9 @@ private:
     int nClasses_;
     double timeStepBound_;
     double skin_;
+    bool adaptiveSkin_;                  // Settings::neighbourSkin < 0
+    double skinMin_, skinMax_;           // bounds of the adaptive skin, m
+    double largestDiameter_;
     std::vector<PlaneWall> walls_;
     std::vector<ContactLaw> pairLaws_;   // nClasses x nClasses
     std::vector<ContactLaw> wallLaws_;   // per class
@@ -112,6 +122,7 @@ private:
 
     std::int64_t stepCount_ = 0;
     std::int64_t listBuilds_ = 0;
+    std::int64_t lastBuildStep_ = -1;    // stepCount_ at the last build; -1: unknown
     bool listValid_ = false;
     bool forcesValid_ = false;
     std::size_t contactCount_ = 0;
