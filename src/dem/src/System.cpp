@@ -24,12 +24,14 @@ double largestDiameter(const Settings& s)
     return d;
 }
 
-// The adaptive skin (Settings::neighbourSkin < 0): chosen at each build so that the next
-// build comes about skinTargetInterval steps later, judged by the fastest particle since
-// the last build, within [0.1, 0.8] d_min. In the solver's bubbling bed a fixed 0.4 d_min
-// (a build every ~25 steps) beat 0.1 d_min (every ~7) by 30 %, while a bed at rest lost 30 %
-// to the extra candidates (docs/performance.md, sessions 9 and 10).
-constexpr double skinTargetInterval = 25.0;     // DEM steps between builds
+// The adaptive skin (Settings::neighbourSkin < 0), chosen at each build from the fastest
+// particle's displacement per step u since the last build. A skin s costs a build every
+// s/(2u) steps and candidate pairs in proportion to s, so the cost per step, b s + 2 c u/s,
+// is least at s = sqrt(2 c u/b) = sqrt(skinCostRatio d_min u); the ratio makes 0.6 mm in the
+// solver's bubbling bed (u ~ 1.2e-5 m per step), where fixed skins of 0.45-1.0 mm ran alike
+// and 0.15 mm 30 % slower, while a bed at rest goes to the narrowest skin, 0.1 d_min
+// (docs/performance.md, sessions 9 and 10). Within [0.1, 0.8] d_min.
+constexpr double skinCostRatio = 20.0;          // 2 c / (b d_min)
 constexpr std::int64_t skinRecheckAfter = 100;  // steps without a build: build, to narrow
 constexpr double skinMinFraction = 0.1;         // of d_min
 constexpr double skinMaxFraction = 0.8;
@@ -63,6 +65,7 @@ System::System(const Settings& settings)
       adaptiveSkin_(settings.neighbourSkin < 0.0),
       skinMin_(adaptiveSkin_ ? skinMinFraction * smallestDiameter(settings) : skin_),
       skinMax_(adaptiveSkin_ ? skinMaxFraction * smallestDiameter(settings) : skin_),
+      smallestDiameter_(smallestDiameter(settings)),
       largestDiameter_(largestDiameter(settings)),
       walls_(boxWalls(settings.box)),
       search_(settings.box.xMin, settings.box.xMax, settings.box.yMin, settings.box.yMax,
@@ -237,10 +240,10 @@ void System::adaptSkin(double maxDisplacement2)
 {
     const std::int64_t interval = stepCount_ - lastBuildStep_;   // drifts since the build
     if (lastBuildStep_ < 0 || interval < 1) return;   // no build to judge by: keep it
-    // The fastest particle moved sqrt(maxDisplacement2) in `interval` steps; a skin of
-    // 2 v T lasts about T steps at that speed. At most a factor 2 per build either way.
+    // The fastest particle moved sqrt(maxDisplacement2) in `interval` steps. At most a
+    // factor 2 per build either way.
     const double perStep = std::sqrt(maxDisplacement2) / static_cast<double>(interval);
-    const double wanted = 2.0 * skinTargetInterval * perStep;
+    const double wanted = std::sqrt(skinCostRatio * smallestDiameter_ * perStep);
     const double next = std::clamp(std::clamp(wanted, 0.5 * skin_, 2.0 * skin_), skinMin_, skinMax_);
     if (next != skin_) setSkin(next);
 }

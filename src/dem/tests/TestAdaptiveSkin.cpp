@@ -1,9 +1,11 @@
-// The adaptive Verlet skin (Settings::neighbourSkin < 0): a build every ~25 steps at the
-// fastest particle's speed, within [0.1, 0.8] d_min; an explicit skin stays fixed.
+// The adaptive Verlet skin (Settings::neighbourSkin < 0): sqrt(20 d_min u) for the fastest
+// particle's displacement u per step, within [0.1, 0.8] d_min; an explicit skin stays fixed.
 
 #include "TestHelpers.hpp"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 using namespace dem;
 using namespace dem::test;
@@ -28,12 +30,12 @@ double skinAfter(double v, int steps, double skin = -1.0)
 
 TEST(AdaptiveSkin, FollowsTheFastestParticle)
 {
-    // In free flight a particle moves v dt per step, so a build every 25 steps needs a skin
-    // of 2 x 25 v dt (the rebuild comes when it has covered half the skin): 0.3 mm at
-    // 0.6 m/s (dt = 1e-5 s), reached from the starting 0.6 mm within a few builds.
-    EXPECT_NEAR(skinAfter(0.6, 2000), 2 * 25 * 0.6 * 1e-5, 1e-9);
+    // In free flight a particle moves u = v dt per step: at 0.6 m/s (dt = 1e-5 s) the skin
+    // is sqrt(20 x 1.5 mm x 6 um) = 0.424 mm, reached from the starting 0.6 mm at the first
+    // builds.
+    EXPECT_NEAR(skinAfter(0.6, 2000), std::sqrt(20 * dSmall * 0.6 * 1e-5), 1e-9);
     // Too fast for the widest skin: 0.8 d_small; at rest: the narrowest, 0.1 d_small.
-    EXPECT_DOUBLE_EQ(skinAfter(5.0, 2000), 0.8 * dSmall);
+    EXPECT_DOUBLE_EQ(skinAfter(10.0, 1000), 0.8 * dSmall);
     EXPECT_DOUBLE_EQ(skinAfter(0.0, 2000), 0.1 * dSmall);
 }
 

@@ -47,10 +47,10 @@ struct Settings {
     double dt = 1e-5;                  ///< DEM step, s
     int nThreads = 1;
     /// Verlet skin of the neighbour list built by NBS, m, fixed. < 0 (the default): adaptive
-    /// in 2D, chosen at each list build so that the next comes ~25 steps later at the
-    /// fastest particle's speed since the last build, between 0.1 and 0.8 x the smallest
-    /// diameter (0.4 to start; saved in the state, so restarts continue bit for bit); the
-    /// slab engine's default is a fixed 0.1 x the smallest diameter.
+    /// in 2D, chosen at each list build from the fastest particle's displacement per step u
+    /// since the last build as sqrt(20 d_min u) (the least cost of builds and candidate
+    /// pairs), between 0.1 and 0.8 x the smallest diameter d_min (0.4 to start; saved in
+    /// the state, so restarts continue bit for bit); the slab's default is a fixed 0.1 d_min.
     double neighbourSkin = -1.0;
     /// 2: discs in the x-y plane (the paper's model); 3: spheres in a slab between a front
     /// wall z = 0 and a back wall z = slabDepth, with the box's walls around (docs/model.md,

@@ -108,7 +108,7 @@ private:
     double skin_;
     bool adaptiveSkin_;                  // Settings::neighbourSkin < 0
     double skinMin_, skinMax_;           // bounds of the adaptive skin, m
-    double largestDiameter_;
+    double smallestDiameter_, largestDiameter_;
     std::vector<PlaneWall> walls_;
     std::vector<ContactLaw> pairLaws_;   // nClasses x nClasses
     std::vector<ContactLaw> wallLaws_;   // per class
