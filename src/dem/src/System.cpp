@@ -137,45 +137,91 @@ void System::rebuildNeighbourList()
     const std::size_t n = p_.size();
     const int ni = static_cast<int>(n);
 
+    const int nThreads = settings_.nThreads;
+    const Index npOld = static_cast<Index>(pairs_.size());
+
     // Old history by particle i (only non-zero entries matter: a zero is a fresh contact).
+    // Filled in parallel in any order: a pair (i, j) is in the list once, so the lookup
+    // below finds the same entry whatever the order within i's.
     std::vector<int> oldStart(n + 1, 0);
-    for (std::size_t k = 0; k < pairs_.size(); ++k) {
-        if (pairs_.xiT[k] != 0.0) ++oldStart[pairs_.i[k] + 1];
+#pragma omp parallel for num_threads(nThreads) schedule(static)
+    for (Index k = 0; k < npOld; ++k) {
+        if (pairs_.xiT[k] != 0.0) {
+#pragma omp atomic
+            ++oldStart[pairs_.i[k] + 1];
+        }
     }
     for (std::size_t q = 0; q < n; ++q) oldStart[q + 1] += oldStart[q];
     std::vector<int> oldPartner(oldStart[n]);
     std::vector<double> oldXi(oldStart[n]);
     {
         std::vector<int> fill(oldStart.begin(), oldStart.end() - 1);
-        for (std::size_t k = 0; k < pairs_.size(); ++k) {
+#pragma omp parallel for num_threads(nThreads) schedule(static)
+        for (Index k = 0; k < npOld; ++k) {
             if (pairs_.xiT[k] != 0.0) {
-                const int slot = fill[pairs_.i[k]]++;
+                int slot;
+#pragma omp atomic capture
+                slot = fill[pairs_.i[k]]++;
                 oldPartner[slot] = pairs_.j[k];
                 oldXi[slot] = pairs_.xiT[k];
             }
         }
     }
 
-    search_.findPairs(p_.x.data(), p_.y.data(), p_.radius.data(), n, skin_, found_,
-                      settings_.nThreads);
+    search_.findPairs(p_.x.data(), p_.y.data(), p_.radius.data(), n, skin_, found_, nThreads);
 
-    // Stable counting sort of the found pairs into their groups.
+    // Stable counting sort of the found pairs into their groups, in parallel over chunks
+    // of the found list: a stable sort has one result, whatever the chunks.
     const std::size_t np = found_.size();
-    std::vector<int> slot(nPairGroups + 1, 0);
-    auto groupOf = [&](const IndexPair& q) { return pairGroup(q.i, q.j, n); };
-    for (const IndexPair& q : found_) ++slot[groupOf(q) + 1];
-    for (int g = 0; g < nPairGroups; ++g) slot[g + 1] += slot[g];
-    pairs_.groupStart = slot;
+    const Index npi = static_cast<Index>(np);
+    std::vector<int>& blockOf = blockScratch_;
+    blockOf.resize(n);
+    for (int b = 0; b < nPairBlocks; ++b) {
+        std::fill(blockOf.begin() + pairBlockBegin(b, n), blockOf.begin() + pairBlockBegin(b + 1, n), b);
+    }
+    auto groupOf = [&](const IndexPair& q) {
+        const int bi = blockOf[q.i];
+        const int bj = blockOf[q.j];
+        return bi == bj ? bi : bj == bi + 1 ? nPairBlocks + bi : nPairGroups - 1;
+    };
+    std::vector<int>& dest = rebuildScratch_;
+    dest.resize(np);
+    std::vector<int> chunkCount(static_cast<std::size_t>(nThreads) * nPairGroups, 0);
+    pairs_.groupStart.assign(nPairGroups + 1, 0);
+#pragma omp parallel num_threads(nThreads)
+    {
+        const Index t = omp_get_thread_num();
+        const Index nt = omp_get_num_threads();
+        const Index first = npi * t / nt;
+        const Index last = npi * (t + 1) / nt;
+        int* count = chunkCount.data() + t * nPairGroups;
+        for (Index q = first; q < last; ++q) {
+            dest[q] = groupOf(found_[q]);
+            ++count[dest[q]];
+        }
+#pragma omp barrier
+#pragma omp single
+        {
+            // Each chunk's first slot per group: the group's start plus the earlier chunks'.
+            int total = 0;
+            for (int g = 0; g < nPairGroups; ++g) {
+                pairs_.groupStart[g] = total;
+                for (Index u = 0; u < nt; ++u) {
+                    const int c = chunkCount[u * nPairGroups + g];
+                    chunkCount[u * nPairGroups + g] = total;
+                    total += c;
+                }
+            }
+            pairs_.groupStart[nPairGroups] = total;
+        }
+        for (Index q = first; q < last; ++q) dest[q] = count[dest[q]]++;
+    }
 
     pairs_.i.resize(np);
     pairs_.j.resize(np);
     pairs_.law.resize(np);
     pairs_.xiT.resize(np);
-    std::vector<int>& dest = rebuildScratch_;
-    dest.resize(np);
-    for (std::size_t q = 0; q < np; ++q) dest[q] = slot[groupOf(found_[q])]++;
-    const Index npi = static_cast<Index>(np);
-#pragma omp parallel for num_threads(settings_.nThreads) schedule(static)
+#pragma omp parallel for num_threads(nThreads) schedule(static)
     for (Index q = 0; q < npi; ++q) {
         const int k = dest[q];
         const int i = found_[q].i;
@@ -201,7 +247,7 @@ void System::rebuildNeighbourList()
     };
     WallList next;
     next.start.assign(n + 1, 0);
-#pragma omp parallel for num_threads(settings_.nThreads) schedule(static)
+#pragma omp parallel for num_threads(nThreads) schedule(static)
     for (int i = 0; i < ni; ++i) {
         int count = 0;
         for (int w = 0; w < nWalls; ++w) count += isCandidate(i, w);

@@ -118,6 +118,7 @@ private:
     NbsSearch search_;
     std::vector<IndexPair> found_;       // scratch of the search
     std::vector<int> rebuildScratch_;    // where each found pair goes in the list
+    std::vector<int> blockScratch_;      // the pair block of each particle
     std::vector<int> touchingScratch_;   // the touching pairs of each group, per step
 
     std::int64_t stepCount_ = 0;
