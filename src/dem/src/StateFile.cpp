@@ -220,7 +220,8 @@ void StateFile::load(System& s, const std::string& path)
     }
     t.stepCount_ = r.value<std::int64_t>();
     t.listBuilds_ = r.value<std::int64_t>();
-    t.lastBuildStep_ = fileVersion >= 5 ? r.value<std::int64_t>() : -1;
+    // Before version 5 the adaptive skin's clock starts at the load.
+    t.lastBuildStep_ = fileVersion >= 5 ? r.value<std::int64_t>() : t.stepCount_;
     t.listValid_ = r.value<std::uint8_t>() != 0;
     t.forcesValid_ = r.value<std::uint8_t>() != 0;
     t.contactCount_ = static_cast<std::size_t>(r.value<std::uint64_t>());
