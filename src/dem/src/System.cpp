@@ -124,12 +124,13 @@ void System::ensureReady()
     if (!listValid_) rebuildNeighbourList();
     if (!forcesValid_) {
         // First evaluation at the initial state: no history accumulation (dt = 0).
-        forcesAndKick(0.0, false, false, false);
+        computePairForces(0.0);
+        addWallForcesAndKick(0.0, false, false);
         forcesValid_ = true;
     }
 }
 
-void System::pairForces(double historyDt, std::size_t& touching, double& maxOverlap)
+void System::computePairForces(double historyDt)
 {
     const int* pi = pairs_.i.data();
     const int* pj = pairs_.j.data();
@@ -144,7 +145,7 @@ void System::pairForces(double historyDt, std::size_t& touching, double& maxOver
     const double* r = p_.radius.data();
     const ContactLaw* laws = pairLaws_.data();
     // Sums over each particle's pairs; p.torque holds the sum of tangential forces until
-    // wallsAndKick multiplies it by the radius.
+    // addWallForcesAndKick multiplies it by the radius.
     double* sumFx = p_.fx.data();
     double* sumFy = p_.fy.data();
     double* sumFt = p_.torque.data();
@@ -185,6 +186,7 @@ void System::pairForces(double historyDt, std::size_t& touching, double& maxOver
     // A particle gets its forces in the same order whatever the thread count.
     // Two passes per group: the touching pairs picked out without a branch (most candidates
     // do not touch, and a branch per pair mispredicts), then their forces in list order.
+    touchingScratch_.resize(pairs_.size());   // (a loaded state's list has no build here)
     int* touchingPairs = touchingScratch_.data();
     auto group = [&](int g, std::size_t& touching, double& maxOverlap) {
         int* picked = touchingPairs + groupStart[g];
@@ -203,58 +205,35 @@ void System::pairForces(double historyDt, std::size_t& touching, double& maxOver
         }
         for (int q = 0; q < m; ++q) pairForce(picked[q], touching, maxOverlap);
     };
-#pragma omp for schedule(static)
-    for (int b = 0; b < nPairBlocks; ++b) {
-        // Zeroed by the thread that sums them (and that kicks these particles next),
-        // so the sums stay in its core's cache
-        const std::size_t first = pairBlockBegin(b, n);
-        const std::size_t last = pairBlockBegin(b + 1, n);
-        std::fill(sumFx + first, sumFx + last, 0.0);
-        std::fill(sumFy + first, sumFy + last, 0.0);
-        std::fill(sumFt + first, sumFt + last, 0.0);
-        group(b, touching, maxOverlap);
-    }
-#pragma omp for schedule(static)
-    for (int m = 0; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
-#pragma omp for schedule(static)
-    for (int m = 1; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
-#pragma omp single
-    group(nPairGroups - 1, touching, maxOverlap);
-}
-
-void System::forcesAndKick(double historyDt, bool kick, bool fluid, bool driftNext)
-{
-    touchingScratch_.resize(pairs_.size());   // (a loaded state's list has no build here)
-    const Index n = static_cast<Index>(p_.size());
     std::size_t touching = 0;
     double maxOverlap = 0.0;
-    double maxDisplacement2 = 0.0;
-    int lost = 0;
-    // One parallel region per step: the pair groups (three barriers and the last group on
-    // one thread), then each thread's own range of particles for the walls, the kick and
-    // the next step's drift, with no barrier between (no particle of another range read).
 #pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
-    reduction(max : maxOverlap, maxDisplacement2) reduction(| : lost)
+    reduction(max : maxOverlap)
     {
-        pairForces(historyDt, touching, maxOverlap);
-        const Index nThreads = omp_get_num_threads();
-        const Index thread = omp_get_thread_num();
-        const Index first = n * thread / nThreads;
-        const Index last = n * (thread + 1) / nThreads;
-        wallsAndKick(first, last, historyDt, kick, fluid, touching, maxOverlap);
-        if (driftNext) driftRange(first, last, maxDisplacement2, lost);
+#pragma omp for schedule(static)
+        for (int b = 0; b < nPairBlocks; ++b) {
+            // Zeroed by the thread that sums them (and that kicks these particles next),
+            // so the sums stay in its core's cache
+            const std::size_t first = pairBlockBegin(b, n);
+            const std::size_t last = pairBlockBegin(b + 1, n);
+            std::fill(sumFx + first, sumFx + last, 0.0);
+            std::fill(sumFy + first, sumFy + last, 0.0);
+            std::fill(sumFt + first, sumFt + last, 0.0);
+            group(b, touching, maxOverlap);
+        }
+#pragma omp for schedule(static)
+        for (int m = 0; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
+#pragma omp for schedule(static)
+        for (int m = 1; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
     }
+    group(nPairGroups - 1, touching, maxOverlap);
     contactCount_ = touching;
     maxOverlap_ = maxOverlap;
-    if (driftNext) {
-        maxDisplacement2_ = maxDisplacement2;
-        lost_ = lost != 0;
-    }
 }
 
-void System::wallsAndKick(Index first, Index last, double historyDt, bool kick, bool fluid,
-                          std::size_t& touching, double& maxOverlap)
+void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
 {
+    const Index n = static_cast<Index>(p_.size());
     const double h = 0.5 * settings_.dt;
     const double gx = settings_.gravity[0];
     const double gy = settings_.gravity[1];
@@ -271,54 +250,67 @@ void System::wallsAndKick(Index first, Index last, double historyDt, bool kick, 
     double* torqueA = p.torque.data();
     const double* radius = p.radius.data();
 
-    // The few particles with wall candidates first: their wall forces are added to the pair
-    // sums in wall order, and their torque made whole (r ft + wall torques); then every
-    // particle's kick, in a loop the compiler vectorises.
-    for (Index i = first; i < last; ++i) {
-        if (wStart[i] == wStart[i + 1]) continue;
-        double fx = fxA[i], fy = fyA[i];
-        const double ri = radius[i];
-        double torque = ri * torqueA[i];
-        for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
-            const PlaneWall& w = walls[wWall[s]];
-            const Eigen::Vector2d pos(p.x[i], p.y[i]);
-            const double overlap = ri - w.distance(pos);
-            if (overlap <= 0.0) {
-                wXi[s] = 0.0;
-                continue;
-            }
-            PairGeometry g;
-            g.overlap = overlap;
-            g.nHat = -w.nHat;
-            const Eigen::Vector2d tHat(-g.nHat.y(), g.nHat.x());
-            g.vRel = Eigen::Vector2d(p.vx[i], p.vy[i]) + p.omega[i] * ri * tHat;
-            g.rI = ri;
-            g.rJ = 0.0;
-            g.xiT = wXi[s];
-            const PairForce f = contactForce(g, wallLaws[p.classIndex[i]], historyDt);
-            fx += f.force.x();
-            fy += f.force.y();
-            torque += f.torqueI;
-            wXi[s] = f.xiT;
-            ++touching;
-            maxOverlap = std::max(maxOverlap, overlap);
-        }
-        fxA[i] = fx;
-        fyA[i] = fy;
-        torqueA[i] = torque;
-    }
-    if (kick && fluid) {
-        kickLoop<true>(first, last, h, gx, gy, weight);
-    } else if (kick) {
-        kickLoop<false>(first, last, h, gx, gy, weight);
-    } else {
-#pragma omp simd
+    std::size_t touching = 0;
+    double maxOverlap = maxOverlap_;
+#pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
+    reduction(max : maxOverlap)
+    {
+        // Each thread its own range of particles, for both loops (no barrier between).
+        // The few particles with wall candidates first: their wall forces are added to the
+        // pair sums in wall order, and their torque made whole (r ft + wall torques); then
+        // every particle's kick, in a loop the compiler vectorises.
+        const Index nThreads = omp_get_num_threads();
+        const Index thread = omp_get_thread_num();
+        const Index first = n * thread / nThreads;
+        const Index last = n * (thread + 1) / nThreads;
         for (Index i = first; i < last; ++i) {
-            // p.torque held the sum of tangential forces until now (none if walls)
+            if (wStart[i] == wStart[i + 1]) continue;
+            double fx = fxA[i], fy = fyA[i];
             const double ri = radius[i];
-            torqueA[i] *= wStart[i] == wStart[i + 1] ? ri : 1.0;
+            double torque = ri * torqueA[i];
+            for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
+                const PlaneWall& w = walls[wWall[s]];
+                const Eigen::Vector2d pos(p.x[i], p.y[i]);
+                const double overlap = ri - w.distance(pos);
+                if (overlap <= 0.0) {
+                    wXi[s] = 0.0;
+                    continue;
+                }
+                PairGeometry g;
+                g.overlap = overlap;
+                g.nHat = -w.nHat;
+                const Eigen::Vector2d tHat(-g.nHat.y(), g.nHat.x());
+                g.vRel = Eigen::Vector2d(p.vx[i], p.vy[i]) + p.omega[i] * ri * tHat;
+                g.rI = ri;
+                g.rJ = 0.0;
+                g.xiT = wXi[s];
+                const PairForce f = contactForce(g, wallLaws[p.classIndex[i]], historyDt);
+                fx += f.force.x();
+                fy += f.force.y();
+                torque += f.torqueI;
+                wXi[s] = f.xiT;
+                ++touching;
+                maxOverlap = std::max(maxOverlap, overlap);
+            }
+            fxA[i] = fx;
+            fyA[i] = fy;
+            torqueA[i] = torque;
+        }
+        if (kick && fluid) {
+            kickLoop<true>(first, last, h, gx, gy, weight);
+        } else if (kick) {
+            kickLoop<false>(first, last, h, gx, gy, weight);
+        } else {
+#pragma omp simd
+            for (Index i = first; i < last; ++i) {
+                // p.torque held the sum of tangential forces until now (none if walls)
+                const double ri = radius[i];
+                torqueA[i] *= wStart[i] == wStart[i + 1] ? ri : 1.0;
+            }
         }
     }
+    contactCount_ += touching;
+    maxOverlap_ = maxOverlap;
 }
 
 template <bool Fluid>
@@ -375,16 +367,22 @@ void System::kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, doubl
     }
 }
 
-void System::driftRange(Index first, Index last, double& maxDisplacement2, int& lost)
+void System::step(bool fluid)
 {
+    ensureReady();
+    const Index n = static_cast<Index>(p_.size());
     const double dt = settings_.dt;
     const double h = 0.5 * dt;
     const double gx = settings_.gravity[0];
     const double gy = settings_.gravity[1];
     const Box& b = settings_.box;
     Particles& p = p_;
-#pragma omp simd reduction(max : maxDisplacement2) reduction(| : lost)
-    for (Index i = first; i < last; ++i) {
+
+    double maxDisplacement2 = 0.0;
+    int lost = 0;
+#pragma omp parallel for simd num_threads(settings_.nThreads) schedule(static) \
+    reduction(max : maxDisplacement2) reduction(| : lost)
+    for (Index i = 0; i < n; ++i) {
         const double invM = p.invMass[i];
         p.vx[i] += h * ((p.fx[i] + p.fluidX[i]) * invM + gx);
         p.vy[i] += h * ((p.fy[i] + p.fluidY[i]) * invM + gy);
@@ -397,47 +395,21 @@ void System::driftRange(Index first, Index last, double& maxDisplacement2, int& 
         // Written so that NaN counts as lost too.
         lost |= !(p.x[i] >= b.xMin && p.x[i] <= b.xMax && p.y[i] >= b.yMin && p.y[i] <= b.yMax);
     }
-}
-
-void System::drift()
-{
-    const Index n = static_cast<Index>(p_.size());
-    double maxDisplacement2 = 0.0;
-    int lost = 0;
-#pragma omp parallel num_threads(settings_.nThreads) reduction(max : maxDisplacement2) \
-    reduction(| : lost)
-    {
-        const Index nThreads = omp_get_num_threads();
-        const Index thread = omp_get_thread_num();
-        driftRange(n * thread / nThreads, n * (thread + 1) / nThreads, maxDisplacement2, lost);
-    }
-    maxDisplacement2_ = maxDisplacement2;
-    lost_ = lost != 0;
-}
-
-void System::finishStep(bool fluid, bool driftNext)
-{
-    if (lost_) throwLostParticle();
+    if (lost) throwLostParticle();
 
     // Rebuild once some particle may have closed half the skin: no contact can be missed.
     // An adaptive skin above its minimum is also rebuilt (narrower) when it lasts long.
-    const bool due = 4.0 * maxDisplacement2_ >= skin_ * skin_;
+    const bool due = 4.0 * maxDisplacement2 >= skin_ * skin_;
     const bool tooWide = adaptiveSkin_ && skin_ > skinMin_ && lastBuildStep_ >= 0
                          && stepCount_ - lastBuildStep_ >= skinRecheckAfter;
     if (due || tooWide) {
-        if (adaptiveSkin_) adaptSkin(maxDisplacement2_);
+        if (adaptiveSkin_) adaptSkin(maxDisplacement2);
         rebuildNeighbourList();
     }
 
-    forcesAndKick(settings_.dt, true, fluid, driftNext);
+    computePairForces(dt);
+    addWallForcesAndKick(dt, true, fluid);
     ++stepCount_;
-}
-
-void System::step(bool fluid)
-{
-    ensureReady();
-    drift();
-    finishStep(fluid, false);
 }
 
 void System::setFluidForceAtCurrentVelocity(bool fluid)
@@ -462,11 +434,9 @@ void System::advance(double dtOuter)
         p.meanVx[i] = 0.5 * p.vx[i];
         p.meanVy[i] = 0.5 * p.vy[i];
     }
-    // Each sub-step's kick and the next one's drift share a parallel region.
-    drift();
     for (long s = 1; s <= nSub; ++s) {
         meanWeight_ = s == nSub ? 0.5 : 1.0;
-        finishStep(true, s < nSub);
+        step(true);
     }
     const double invN = 1.0 / static_cast<double>(nSub);
     for (std::size_t i = 0; i < p.size(); ++i) {

@@ -88,25 +88,12 @@ private:
     /// Sets the skin and the search cells that fit it.
     void setSkin(double skin);
     void ensureReady();
-    /// The first half-kick and the drift of particles [first, last), with the largest
-    /// displacement since the last list build and whether any left the box.
-    void driftRange(std::ptrdiff_t first, std::ptrdiff_t last, double& maxDisplacement2,
-                    int& lost);
-    /// driftRange over all particles, into maxDisplacement2_ and lost_.
-    void drift();
-    /// The rest of a step after its drift: list build if needed, forces, second half-kick;
-    /// driftNext: the next step's drift too (in the same parallel region).
-    void finishStep(bool fluid, bool driftNext);
-    /// Pair forces, walls and the second half-kick (kick = false: only the forces, for the
-    /// first evaluation), and with driftNext the next drift, in one parallel region.
-    void forcesAndKick(double historyDt, bool kick, bool fluid, bool driftNext);
-    /// Sums each particle's pair forces (by every thread of a parallel region: blocks of
-    /// pairs, each pair once, in an order that does not depend on the thread count).
-    void pairForces(double historyDt, std::size_t& touching, double& maxOverlap);
-    /// Adds the wall contacts of particles [first, last) to their pair sums and does their
-    /// second half-kick (kick = false: only the torque made whole).
-    void wallsAndKick(std::ptrdiff_t first, std::ptrdiff_t last, double historyDt, bool kick,
-                      bool fluid, std::size_t& touching, double& maxOverlap);
+    /// Sums each particle's pair forces (parallel over blocks of pairs, each pair once, in
+    /// an order that does not depend on the thread count).
+    void computePairForces(double historyDt);
+    /// Adds the wall contacts to the pair sums and does the second half-kick (kick = false:
+    /// only the forces, for the first evaluation).
+    void addWallForcesAndKick(double historyDt, bool kick, bool fluid);
     /// The second half-kick of particles [first, last).
     template <bool Fluid>
     void kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, double gx, double gy,
@@ -155,8 +142,6 @@ private:
     std::size_t contactCount_ = 0;
     double maxOverlap_ = 0.0;
     double meanWeight_ = 1.0;           // weight of this sub-step's velocity in the CFD-step mean
-    double maxDisplacement2_ = 0.0;     // of the last drift, since the last list build, m^2
-    bool lost_ = false;                 // a particle left the box in the last drift
     std::optional<BedRecipe> recipe_;   // how the particles were made, if packBed made them
 
     friend class StateFile;
