@@ -60,6 +60,7 @@ inline void countStepsAndBuilds(benchmark::State& state, const dem::Simulation& 
         static_cast<double>(sim.size()) * steps, benchmark::Counter::kIsRate);
     state.counters["steps_per_list_build"] =
         steps / static_cast<double>(std::max<std::int64_t>(1, sim.neighbourListBuilds() - builds0));
+    state.counters["skin_mm"] = 1e3 * sim.neighbourSkin();   // at the end (adaptive: varies)
 }
 
 } // namespace demBench

@@ -15,104 +15,76 @@ CellMapper::CellMapper(double xMin, double xMax, double yMin, double yMax, doubl
     cellHeight_ = (yMax - yMin) / nRows_;
     invWidth_ = 1.0 / cellWidth_;
     invHeight_ = 1.0 / cellHeight_;
-    rowHead_.assign(nRows_, -1);
-}
-
-void CellMapper::linkRows(const double* y, std::size_t n)
-{
-    std::fill(rowHead_.begin(), rowHead_.end(), -1);
-    rowNext_.resize(n);
-    // Insert in reverse so that each row list runs in increasing particle index.
-    for (std::size_t k = n; k-- > 0;) {
-        const int r = row(y[k]);
-        rowNext_[k] = rowHead_[r];
-        rowHead_[r] = static_cast<int>(k);
-    }
-}
-
-void CellMapper::linkColumns(int r, const double* x, std::vector<int>& heads,
-                             std::vector<int>& columnNext) const
-{
-    // Pushing at the head reverses the row order; the walk order stays fixed either way.
-    for (int i = rowHead_[r]; i >= 0; i = rowNext_[i]) {
-        const int c = column(x[i]);
-        columnNext[i] = heads[c];
-        heads[c] = i;
-    }
-}
-
-void CellMapper::unlinkColumns(int r, const double* x, std::vector<int>& heads) const
-{
-    for (int i = rowHead_[r]; i >= 0; i = rowNext_[i]) heads[column(x[i])] = -1;
 }
 
 NbsSearch::NbsSearch(double xMin, double xMax, double yMin, double yMax, double minCellSize)
-    : mapper_(xMin, xMax, yMin, yMax, minCellSize)
+    : xMin_(xMin), xMax_(xMax), yMin_(yMin), yMax_(yMax),
+      mapper_(xMin, xMax, yMin, yMax, minCellSize)
 {
 }
 
+void NbsSearch::setMinCellSize(double minCellSize)
+{
+    mapper_ = CellMapper(xMin_, xMax_, yMin_, yMax_, minCellSize);
+}
+
 template <bool Is3D>
-void NbsSearch::walkRows(int first, int last, const double* x, const double* y, const double* r,
-                         std::size_t n, double margin, Band& band) const
+void NbsSearch::walkRows(int first, int last, double margin, std::vector<IndexPair>& pairs) const
 {
     const int nColumns = mapper_.nColumns();
-    band.headsThisRow.assign(nColumns, -1);
-    band.headsRowBelow.assign(nColumns, -1);
-    band.columnNext.resize(n);
-    std::vector<int>& columnNext = band.columnNext;
-    std::vector<int>& headsThisRow = band.headsThisRow;
-    std::vector<int>& headsRowBelow = band.headsRowBelow;
-    std::vector<IndexPair>& pairs = band.pairs;
-    pairs.clear();
-
-    auto test = [&](int i, int j) {
-        const double dx = x[j] - x[i];
-        const double dy = y[j] - y[i];
-        const double reach = r[i] + r[j] + margin;
-        double d2 = dx * dx + dy * dy;
-        if constexpr (Is3D) {
-            const double dz = band.z[j] - band.z[i];
-            d2 += dz * dz;
+    const int* start = cellStart_.data();
+    const int* id = id_.data();
+    const double* x = x_.data();
+    const double* y = y_.data();
+    const double* z = z_.data();
+    const double* r = r_.data();
+    std::size_t m = 0;   // pairs found; `pairs` is kept longer, written without a branch
+    if (pairs.size() < 64) pairs.resize(64);
+    // Tests sorted particle a against b in [b0, b1): every b is written, the count moves
+    // on only for the pairs within reach.
+    auto testRange = [&](int a, int b0, int b1) {
+        if (b1 <= b0) return;
+        if (pairs.size() < m + static_cast<std::size_t>(b1 - b0)) {
+            pairs.resize(2 * (m + static_cast<std::size_t>(b1 - b0)));
         }
-        if (d2 < reach * reach) {
-            pairs.push_back(i < j ? IndexPair{i, j} : IndexPair{j, i});
+        IndexPair* out = pairs.data();
+        const double xa = x[a], ya = y[a], ra = r[a] + margin;
+        const int ia = id[a];
+        for (int b = b0; b < b1; ++b) {
+            const double dx = x[b] - xa;
+            const double dy = y[b] - ya;
+            const double reach = ra + r[b];
+            double d2 = dx * dx + dy * dy;
+            if constexpr (Is3D) {
+                const double dz = z[b] - z[a];
+                d2 += dz * dz;
+            }
+            const int ib = id[b];
+            out[m] = IndexPair{std::min(ia, ib), std::max(ia, ib)};
+            m += d2 < reach * reach;
         }
     };
-    auto testList = [&](int i, int head) {
-        for (int j = head; j >= 0; j = columnNext[j]) test(i, j);
-    };
 
-    // Half stencil: own cell (later entries only), east, and the three cells of the row
-    // below (south-west, south, south-east): every neighbouring cell pair is visited once.
-    int linkedBelow = -1;   // row whose column lists are in headsRowBelow, -1 if none
-    if (first > 0 && mapper_.rowHead(first - 1) >= 0) {
-        mapper_.linkColumns(first - 1, x, headsRowBelow, columnNext);
-        linkedBelow = first - 1;
-    }
+    // Half stencil: own cell (later entries only) and east, one contiguous range; the
+    // south-west, south and south-east cells, another: every neighbouring cell pair once.
     for (int row = first; row < last; ++row) {
-        if (mapper_.rowHead(row) < 0) continue;
-        if (linkedBelow != row - 1 && linkedBelow >= 0) {
-            mapper_.unlinkColumns(linkedBelow, x, headsRowBelow);
-            linkedBelow = -1;
-        }
-        mapper_.linkColumns(row, x, headsThisRow, columnNext);
-        const bool haveBelow = linkedBelow == row - 1;
-
-        for (int i = mapper_.rowHead(row); i >= 0; i = mapper_.rowNext(i)) {
-            const int c = mapper_.column(x[i]);
-            testList(i, columnNext[i]);
-            if (c + 1 < nColumns) testList(i, headsThisRow[c + 1]);
-            if (haveBelow) {
-                if (c > 0) testList(i, headsRowBelow[c - 1]);
-                testList(i, headsRowBelow[c]);
-                if (c + 1 < nColumns) testList(i, headsRowBelow[c + 1]);
+        const int rowFirst = row * nColumns;
+        if (start[rowFirst] == start[rowFirst + nColumns]) continue;   // an empty row
+        for (int col = 0; col < nColumns; ++col) {
+            const int c = rowFirst + col;
+            const int eastEnd = start[rowFirst + std::min(col + 1, nColumns - 1) + 1];
+            int belowBegin = 0, belowEnd = 0;
+            if (row > 0) {
+                belowBegin = start[c - nColumns + (col > 0 ? -1 : 0)];
+                belowEnd = start[c - nColumns + (col + 1 < nColumns ? 2 : 1)];
+            }
+            for (int a = start[c]; a < start[c + 1]; ++a) {
+                testRange(a, a + 1, eastEnd);
+                testRange(a, belowBegin, belowEnd);
             }
         }
-
-        if (linkedBelow >= 0) mapper_.unlinkColumns(linkedBelow, x, headsRowBelow);
-        std::swap(headsThisRow, headsRowBelow);
-        linkedBelow = row;
     }
+    pairs.resize(m);
 }
 
 void NbsSearch::findPairs(const double* x, const double* y, const double* r, std::size_t n,
@@ -132,44 +104,58 @@ template <bool Is3D>
 void NbsSearch::find(const double* x, const double* y, const double* z, const double* r,
                      std::size_t n, double margin, std::vector<IndexPair>& pairs, int nThreads)
 {
-    mapper_.linkRows(y, n);
     const int nRows = mapper_.nRows();
-    const int nBands = std::max(1, nThreads);
-    bands_.resize(nBands);
+    const int nColumns = mapper_.nColumns();
+    const std::size_t nCells = static_cast<std::size_t>(nRows) * nColumns;
+
+    // Counting sort by cell (stable: a cell's particles in increasing index).
+    cellStart_.assign(nCells + 1, 0);
+    cellOf_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        cellOf_[k] = mapper_.cell(x[k], y[k]);
+        ++cellStart_[cellOf_[k] + 1];
+    }
+    for (std::size_t c = 0; c < nCells; ++c) cellStart_[c + 1] += cellStart_[c];
+    id_.resize(n);
+    x_.resize(n);
+    y_.resize(n);
+    r_.resize(n);
+    z_.resize(Is3D ? n : 0);
+    for (std::size_t k = 0; k < n; ++k) {
+        const int q = cellStart_[cellOf_[k]]++;
+        id_[q] = static_cast<int>(k);
+        x_[q] = x[k];
+        y_[q] = y[k];
+        r_[q] = r[k];
+        if constexpr (Is3D) z_[q] = z[k];
+    }
+    // The fill moved each start to the next cell's: shift back.
+    for (std::size_t c = nCells; c > 0; --c) cellStart_[c] = cellStart_[c - 1];
+    cellStart_[0] = 0;
 
     // Bands of rows with about n / nBands particles each.
-    rowCount_.assign(nRows, 0);
-    for (std::size_t k = 0; k < n; ++k) ++rowCount_[mapper_.row(y[k])];
+    const int nBands = std::max(1, nThreads);
+    bandPairs_.resize(nBands);
     std::vector<int> bandStart(nBands + 1, nRows);
     bandStart[0] = 0;
-    {
-        std::size_t seen = 0;
-        int b = 1;
-        for (int row = 0; row < nRows && b < nBands; ++row) {
-            seen += rowCount_[row];
-            while (b < nBands && seen * nBands >= static_cast<std::size_t>(b) * n) bandStart[b++] = row + 1;
-        }
+    for (int row = 0, b = 1; row < nRows && b < nBands; ++row) {
+        const auto seen = static_cast<std::size_t>(cellStart_[(row + 1) * nColumns]);
+        while (b < nBands && seen * nBands >= static_cast<std::size_t>(b) * n) bandStart[b++] = row + 1;
     }
 
 #pragma omp parallel for num_threads(nBands) schedule(static, 1)
-    for (int b = 0; b < nBands; ++b) {
-        bands_[b].z = z;
-        walkRows<Is3D>(bandStart[b], bandStart[b + 1], x, y, r, n, margin, bands_[b]);
-    }
+    for (int b = 0; b < nBands; ++b) walkRows<Is3D>(bandStart[b], bandStart[b + 1], margin, bandPairs_[b]);
 
     pairs.clear();
-    for (const Band& band : bands_) pairs.insert(pairs.end(), band.pairs.begin(), band.pairs.end());
+    for (const auto& band : bandPairs_) pairs.insert(pairs.end(), band.begin(), band.end());
 }
 
 std::size_t NbsSearch::memoryBytes() const
 {
-    std::size_t bytes = sizeof(int) * (rowCount_.capacity()
-                                       + 2 * static_cast<std::size_t>(mapper_.nRows()));
-    for (const Band& b : bands_) {
-        bytes += sizeof(int) * (b.headsThisRow.capacity() + b.headsRowBelow.capacity()
-                                + b.columnNext.capacity())
-                 + sizeof(IndexPair) * b.pairs.capacity();
-    }
+    std::size_t bytes = sizeof(int) * (cellStart_.capacity() + cellOf_.capacity() + id_.capacity())
+                        + sizeof(double) * (x_.capacity() + y_.capacity() + z_.capacity()
+                                            + r_.capacity());
+    for (const auto& band : bandPairs_) bytes += sizeof(IndexPair) * band.capacity();
     return bytes;
 }
 

@@ -121,7 +121,7 @@ void validateSettings(const Settings& s)
     }
     if (std::isnan(s.neighbourSkin) || std::isinf(s.neighbourSkin)) {
         throw Error("neighbourSkin = " + formatValue(s.neighbourSkin)
-                    + " is outside [0, inf) (or < 0 for 0.1 x smallest diameter)");
+                    + " is outside [0, inf) (or < 0 for the default)");
     }
 
     if (s.dimension != 2 && s.dimension != 3) {

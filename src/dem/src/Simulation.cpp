@@ -150,6 +150,10 @@ std::int64_t Simulation::neighbourListBuilds() const
 {
     return slab_ ? slab_->neighbourListBuilds() : system_->neighbourListBuilds();
 }
+double Simulation::neighbourSkin() const
+{
+    return slab_ ? slab_->neighbourSkin() : system_->neighbourSkin();
+}
 std::size_t Simulation::memoryBytes() const
 {
     return slab_ ? slab_->memoryBytes() : system_->memoryBytes();

@@ -2,12 +2,14 @@
 // bit for bit (positions, velocities, forces of the last evaluation, the neighbour list
 // in its order, the contact history, the reference positions of the skin criterion), and
 // since version 4 the recipe of a packed bed (counts, region, seed, settling), so that a
-// case can check that a bed was made for its particles. Versions 2 and 3 are read too
-// (no recipe; a version-2 list is rebuilt).
+// case can check that a bed was made for its particles, and since version 5 the step of
+// the last list build (the adaptive skin's clock; the skin itself is the key's last entry).
+// Versions 2-4 are read too (no recipe before 4; a version-2 list is rebuilt).
 
 #include "dem/StateRecord.hpp"
 #include "dem/System.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -22,7 +24,8 @@ namespace dem {
 namespace {
 
 constexpr char magic[16] = "dpmFoam2D-dem\n";
-constexpr std::uint32_t version = 4;
+constexpr std::uint32_t version = 5;
+constexpr std::uint32_t version4 = 4;   // no step of the last build
 constexpr std::uint32_t version3 = 3;   // no recipe
 constexpr std::uint32_t version2 = 2;   // stored pair forces and a per-particle index; read, list rebuilt
 
@@ -128,6 +131,7 @@ void StateFile::write(const System& s, Writer& w)
     }
     w.value(s.stepCount_);
     w.value(s.listBuilds_);
+    w.value(s.lastBuildStep_);
     w.value(static_cast<std::uint8_t>(s.listValid_));
     w.value(static_cast<std::uint8_t>(s.forcesValid_));
     w.value(static_cast<std::uint64_t>(s.contactCount_));
@@ -181,9 +185,11 @@ void StateFile::load(System& s, const std::string& path)
     in.read(head, sizeof(head));
     if (!in || std::memcmp(head, magic, sizeof(magic)) != 0) r.fail("wrong file type");
     const auto fileVersion = r.value<std::uint32_t>();
-    if (fileVersion != version && fileVersion != version3 && fileVersion != version2) {
+    if (fileVersion != version && fileVersion != version4 && fileVersion != version3
+        && fileVersion != version2) {
         r.fail("version " + std::to_string(fileVersion) + ", expected " + std::to_string(version)
-               + ", " + std::to_string(version3) + " or " + std::to_string(version2));
+               + ", " + std::to_string(version4) + ", " + std::to_string(version3) + " or "
+               + std::to_string(version2));
     }
     std::vector<double> key;
     r.array(key);
@@ -193,9 +199,11 @@ void StateFile::load(System& s, const std::string& path)
         throw Error("state file '" + path + "' was written with other settings: "
                     + describe(differ));
     }
-    const bool sameSkin = key.back() == here.back();
     // Read into a copy so that a bad file leaves the running system untouched.
     System t = s;
+    // An adaptive skin continues from the file's (within its bounds); a fixed one stays.
+    if (t.adaptiveSkin_) t.setSkin(std::clamp(key.back(), t.skinMin_, t.skinMax_));
+    const bool sameSkin = key.back() == t.skin_;
     t.recipe_.reset();
     if (fileVersion >= 4 && r.value<std::uint8_t>() != 0) {
         BedRecipe recipe;
@@ -212,6 +220,8 @@ void StateFile::load(System& s, const std::string& path)
     }
     t.stepCount_ = r.value<std::int64_t>();
     t.listBuilds_ = r.value<std::int64_t>();
+    // Before version 5 the adaptive skin's clock starts at the load.
+    t.lastBuildStep_ = fileVersion >= 5 ? r.value<std::int64_t>() : t.stepCount_;
     t.listValid_ = r.value<std::uint8_t>() != 0;
     t.forcesValid_ = r.value<std::uint8_t>() != 0;
     t.contactCount_ = static_cast<std::size_t>(r.value<std::uint64_t>());
@@ -273,7 +283,8 @@ void StateFile::load(System& s, const std::string& path)
              && monotone(bs, static_cast<std::size_t>(bs.back()))
              && static_cast<std::size_t>(bs.back()) <= np;
     }
-    ok = ok && (!t.listValid_ || !bs.empty())
+    ok = ok && t.lastBuildStep_ >= -1 && t.lastBuildStep_ <= t.stepCount_
+         && (!t.listValid_ || !bs.empty())
          && monotone(wl.start, wl.wall.size())
          && (!t.listValid_ || wl.start.size() == n + 1);
     for (std::size_t s2 = 0; ok && s2 < wl.wall.size(); ++s2) {

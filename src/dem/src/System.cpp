@@ -24,12 +24,9 @@ double largestDiameter(const Settings& s)
     return d;
 }
 
-double resolvedSkin(const Settings& s)
+double resolvedSkin(const Settings& s, double startFraction)
 {
-    // 0.4 d_min: in the solver's bubbling bed the list is then rebuilt every ~25 steps
-    // instead of ~7 (0.1 d_min), which saves more than the extra candidate pairs cost
-    // (BM_SolverBed, docs/performance.md, session 9)
-    return s.neighbourSkin >= 0.0 ? s.neighbourSkin : 0.4 * smallestDiameter(s);
+    return s.neighbourSkin >= 0.0 ? s.neighbourSkin : startFraction * smallestDiameter(s);
 }
 
 const Settings& validated(const Settings& s)
@@ -51,10 +48,15 @@ System::System(const Settings& settings)
     : settings_(validated(settings)),
       nClasses_(static_cast<int>(settings.classes.size())),
       timeStepBound_(dem::timeStepBound(settings)),
-      skin_(resolvedSkin(settings)),
+      skin_(resolvedSkin(settings, skinStartFraction)),
+      adaptiveSkin_(settings.neighbourSkin < 0.0),
+      skinMin_(adaptiveSkin_ ? skinMinFraction * smallestDiameter(settings) : skin_),
+      skinMax_(adaptiveSkin_ ? skinMaxFraction * smallestDiameter(settings) : skin_),
+      smallestDiameter_(smallestDiameter(settings)),
+      largestDiameter_(largestDiameter(settings)),
       walls_(boxWalls(settings.box)),
       search_(settings.box.xMin, settings.box.xMax, settings.box.yMin, settings.box.yMax,
-              largestDiameter(settings) + resolvedSkin(settings))
+              largestDiameter(settings) + resolvedSkin(settings, skinStartFraction))
 {
     buildLaws();
 }
@@ -115,167 +117,6 @@ void System::addParticle(int cls, double x, double y, double vx, double vy, doub
     listValid_ = false;
     forcesValid_ = false;
     recipe_.reset();   // the particles are no longer the recipe's alone
-}
-
-void System::rebuildNeighbourList()
-{
-    const std::size_t n = p_.size();
-    const int ni = static_cast<int>(n);
-
-    // Old history by particle i (only non-zero entries matter: a zero is a fresh contact).
-    std::vector<int> oldStart(n + 1, 0);
-    for (std::size_t k = 0; k < pairs_.size(); ++k) {
-        if (pairs_.xiT[k] != 0.0) ++oldStart[pairs_.i[k] + 1];
-    }
-    for (std::size_t q = 0; q < n; ++q) oldStart[q + 1] += oldStart[q];
-    std::vector<int> oldPartner(oldStart[n]);
-    std::vector<double> oldXi(oldStart[n]);
-    {
-        std::vector<int> fill(oldStart.begin(), oldStart.end() - 1);
-        for (std::size_t k = 0; k < pairs_.size(); ++k) {
-            if (pairs_.xiT[k] != 0.0) {
-                const int slot = fill[pairs_.i[k]]++;
-                oldPartner[slot] = pairs_.j[k];
-                oldXi[slot] = pairs_.xiT[k];
-            }
-        }
-    }
-
-    search_.findPairs(p_.x.data(), p_.y.data(), p_.radius.data(), n, skin_, found_,
-                      settings_.nThreads);
-
-    // Stable counting sort of the found pairs into their groups.
-    const std::size_t np = found_.size();
-    std::vector<int> slot(nPairGroups + 1, 0);
-    auto groupOf = [&](const IndexPair& q) { return pairGroup(q.i, q.j, n); };
-    for (const IndexPair& q : found_) ++slot[groupOf(q) + 1];
-    for (int g = 0; g < nPairGroups; ++g) slot[g + 1] += slot[g];
-    pairs_.groupStart = slot;
-
-    pairs_.i.resize(np);
-    pairs_.j.resize(np);
-    pairs_.law.resize(np);
-    pairs_.xiT.resize(np);
-    std::vector<int>& dest = rebuildScratch_;
-    dest.resize(np);
-    for (std::size_t q = 0; q < np; ++q) dest[q] = slot[groupOf(found_[q])]++;
-    const Index npi = static_cast<Index>(np);
-#pragma omp parallel for num_threads(settings_.nThreads) schedule(static)
-    for (Index q = 0; q < npi; ++q) {
-        const int k = dest[q];
-        const int i = found_[q].i;
-        const int j = found_[q].j;
-        pairs_.i[k] = i;
-        pairs_.j[k] = j;
-        pairs_.law[k] = p_.classIndex[i] * nClasses_ + p_.classIndex[j];
-        double xi = 0.0;
-        for (int s = oldStart[i]; s < oldStart[i + 1]; ++s) {
-            if (oldPartner[s] == j) {
-                xi = oldXi[s];
-                break;
-            }
-        }
-        pairs_.xiT[k] = xi;
-    }
-
-    // Walls: candidates within radius + skin, history carried over by (particle, wall);
-    // counted per particle, then filled, both in parallel.
-    const int nWalls = static_cast<int>(walls_.size());
-    auto isCandidate = [&](int i, int w) {
-        return walls_[w].distance(Eigen::Vector2d(p_.x[i], p_.y[i])) < p_.radius[i] + skin_;
-    };
-    WallList next;
-    next.start.assign(n + 1, 0);
-#pragma omp parallel for num_threads(settings_.nThreads) schedule(static)
-    for (int i = 0; i < ni; ++i) {
-        int count = 0;
-        for (int w = 0; w < nWalls; ++w) count += isCandidate(i, w);
-        next.start[i + 1] = count;
-    }
-    for (std::size_t q = 0; q < n; ++q) next.start[q + 1] += next.start[q];
-    next.wall.resize(next.start[n]);
-    next.xiT.resize(next.start[n]);
-    const bool haveOld = wallContacts_.start.size() == n + 1;
-#pragma omp parallel for num_threads(settings_.nThreads) schedule(static)
-    for (int i = 0; i < ni; ++i) {
-        int s = next.start[i];
-        for (int w = 0; w < nWalls; ++w) {
-            if (!isCandidate(i, w)) continue;
-            double xi = 0.0;
-            if (haveOld) {
-                for (int o = wallContacts_.start[i]; o < wallContacts_.start[i + 1]; ++o) {
-                    if (wallContacts_.wall[o] == w) xi = wallContacts_.xiT[o];
-                }
-            }
-            next.wall[s] = w;
-            next.xiT[s] = xi;
-            ++s;
-        }
-    }
-    wallContacts_ = std::move(next);
-
-    p_.xRef = p_.x;
-    p_.yRef = p_.y;
-    listValid_ = true;
-    ++listBuilds_;
-}
-
-void System::sortByCell()
-{
-    const std::size_t n = p_.size();
-    if (n == 0) return;
-    const CellMapper& cells = search_.mapper();
-    const int nCells = cells.nRows() * cells.nColumns();
-
-    // Counting sort by cell (stable: ties keep their order): order[q] = old index of new q.
-    std::vector<int> start(static_cast<std::size_t>(nCells) + 1, 0);
-    std::vector<int> cellOf(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        cellOf[i] = cells.row(p_.y[i]) * cells.nColumns() + cells.column(p_.x[i]);
-        ++start[cellOf[i] + 1];
-    }
-    for (int c = 0; c < nCells; ++c) start[c + 1] += start[c];
-    std::vector<int> order(n), newIndex(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const int q = start[cellOf[i]]++;
-        order[q] = static_cast<int>(i);
-        newIndex[i] = q;
-    }
-
-    p_.forEachArray([&](auto& a) {
-        auto sorted = a;
-        for (std::size_t q = 0; q < n; ++q) sorted[q] = a[order[q]];
-        a = std::move(sorted);
-    });
-
-    // Pair history under the new numbers, kept as i < j. The stored tangential displacement
-    // is symmetric in i and j (swapping them flips both nHat and the relative velocity, so
-    // vRel . tHat is unchanged): no sign to change.
-    for (std::size_t k = 0; k < pairs_.size(); ++k) {
-        int i = newIndex[pairs_.i[k]];
-        int j = newIndex[pairs_.j[k]];
-        if (i > j) std::swap(i, j);
-        pairs_.i[k] = i;
-        pairs_.j[k] = j;
-    }
-
-    // Wall history: regroup by the new particle numbers.
-    if (wallContacts_.start.size() == n + 1) {
-        WallList next;
-        next.start.assign(n + 1, 0);
-        for (std::size_t q = 0; q < n; ++q) {
-            const int i = order[q];
-            for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
-                next.wall.push_back(wallContacts_.wall[s]);
-                next.xiT.push_back(wallContacts_.xiT[s]);
-            }
-            next.start[q + 1] = static_cast<int>(next.wall.size());
-        }
-        wallContacts_ = std::move(next);
-    }
-
-    // A fresh list under the new numbers (it carries the remapped history over).
-    rebuildNeighbourList();
 }
 
 void System::ensureReady()
@@ -557,7 +398,14 @@ void System::step(bool fluid)
     if (lost) throwLostParticle();
 
     // Rebuild once some particle may have closed half the skin: no contact can be missed.
-    if (4.0 * maxDisplacement2 >= skin_ * skin_) rebuildNeighbourList();
+    // An adaptive skin above its minimum is also rebuilt (narrower) when it lasts long.
+    const bool due = 4.0 * maxDisplacement2 >= skin_ * skin_;
+    const bool tooWide = adaptiveSkin_ && skin_ > skinMin_ && lastBuildStep_ >= 0
+                         && stepCount_ - lastBuildStep_ >= skinRecheckAfter;
+    if (due || tooWide) {
+        if (adaptiveSkin_) adaptSkin(maxDisplacement2);
+        rebuildNeighbourList();
+    }
 
     computePairForces(dt);
     addWallForcesAndKick(dt, true, fluid);

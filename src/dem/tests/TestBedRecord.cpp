@@ -186,7 +186,8 @@ TEST(BedRecord, RestartMismatchNamesTheSetting)
 
 TEST(BedRecord, VersionThreeBedIsCheckedOnItsCounts)
 {
-    // A version-3 file: the version-4 layout without the recipe flag.
+    // A version-3 file: the version-5 layout without the recipe flag and without the step
+    // of the last list build (after the step count and the build count).
     const std::string path = tempPath("bedVersion3.state");
     Simulation sim(settings());
     sim.packRandom(recipe().countPerClass, recipe().region, 42);
@@ -199,6 +200,7 @@ TEST(BedRecord, VersionThreeBedIsCheckedOnItsCounts)
     std::memcpy(&keyLength, &bytes[20], sizeof(keyLength));
     const std::size_t flag = 28 + keyLength * sizeof(double);
     ASSERT_EQ(bytes[flag], 0);
+    bytes.erase(flag + 1 + 2 * sizeof(std::int64_t), sizeof(std::int64_t));
     bytes.erase(flag, 1);
     writeBytes(path, bytes);
 

@@ -60,11 +60,12 @@ std::vector<std::pair<int, int>> sorted(const std::vector<IndexPair>& pairs)
 TEST(Nbs, EqualsBruteForceOnSeededConfigurations)
 {
     // Box widths that are and are not multiples of the cell; margin 0 (contacts) and the
-    // Verlet skins of 0.1 and 0.4 d_small (the default); dense and dilute.
+    // Verlet skins of 0.1, 0.4 and 0.8 d_small (the adaptive skin's bounds and start);
+    // dense and dilute.
     for (std::uint64_t seed : {1u, 2u, 3u}) {
         for (double w : {0.15, 0.0437}) {
             for (int n : {300, 3000}) {
-                for (double margin : {0.0, 1.5e-4, 6e-4}) {
+                for (double margin : {0.0, 1.5e-4, 6e-4, 1.2e-3}) {
                     const double h = 0.06;
                     const double cellMin = 2.5e-3 + margin;
                     NbsSearch nbs(0.0, w, 0.0, h, cellMin);

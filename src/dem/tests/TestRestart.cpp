@@ -72,10 +72,16 @@ TEST(Restart, SaveLoadContinueIsBitwiseIdentical)
 {
     const std::string path = testing::TempDir() + "demRestart.state";
     auto whole = start(1);
+    double skinAtSave = 0.0;
     for (int k = 0; k < 600; ++k) {
-        if (k == 300) whole->save(path);
+        if (k == 300) {
+            whole->save(path);
+            skinAtSave = whole->neighbourSkin();
+        }
         cfdStep(*whole, k);
     }
+    // The adaptive skin has left its start (0.4 d_small), so the file carries its state.
+    EXPECT_NE(skinAtSave, 0.4 * dSmall);
     Simulation resumed(settings(1));
     resumed.load(path);
     EXPECT_EQ(resumed.stepCount(), 3000);

@@ -1,16 +1,14 @@
 #pragma once
-// The NBS cell mapper: a uniform grid over the box and the per-row / per-column linked
-// lists of Munjiza & Andrews (1998). It only maps; NbsSearch walks what it builds.
+// The search grid: a uniform grid of cells over the box (NbsSearch sorts the particles by
+// its cells; System::sortByCell numbers them in its order).
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <vector>
 
 namespace dem {
 
-/// Grid of cells at least minCellSize wide, and head/next linked lists of particles by row
-/// and, for one row at a time, by column. Memory is O(N + rows + columns), not O(cells).
+/// Grid of cells at least minCellSize wide, numbered row by row.
 class CellMapper {
 public:
     /// Grid over [xMin, xMax] x [yMin, yMax] with cells no smaller than minCellSize (m).
@@ -26,19 +24,8 @@ public:
     /// Row of y, clamped to the grid.
     int row(double y) const { return clampIndex((y - yMin_) * invHeight_, nRows_); }
 
-    /// Links particles 0..n-1 into per-row lists (rowHead/next), reusing the arrays.
-    void linkRows(const double* y, std::size_t n);
-    /// First particle of a row list, or -1.
-    int rowHead(int r) const { return rowHead_[r]; }
-    /// Next particle in the same row list, or -1.
-    int rowNext(int i) const { return rowNext_[i]; }
-
-    /// Links the particles of row r into per-column lists of `heads` (length nColumns(),
-    /// all -1 on entry); the next-links go into columnNext (length >= n).
-    void linkColumns(int r, const double* x, std::vector<int>& heads,
-                     std::vector<int>& columnNext) const;
-    /// Sets back to -1 the heads that linkColumns(r, ...) set.
-    void unlinkColumns(int r, const double* x, std::vector<int>& heads) const;
+    /// Cell of (x, y), row by row: row(y) nColumns() + column(x).
+    int cell(double x, double y) const { return row(y) * nColumns_ + column(x); }
 
 private:
     static int clampIndex(double s, int n)
@@ -52,8 +39,6 @@ private:
     double xMin_, yMin_;
     int nColumns_, nRows_;
     double cellWidth_, cellHeight_, invWidth_, invHeight_;
-    std::vector<int> rowHead_;
-    std::vector<int> rowNext_;
 };
 
 } // namespace dem

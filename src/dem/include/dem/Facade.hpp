@@ -46,8 +46,11 @@ struct Settings {
     double gravity[2] = {0.0, -9.81};  ///< m/s^2
     double dt = 1e-5;                  ///< DEM step, s
     int nThreads = 1;
-    /// Verlet skin of the neighbour list built by NBS, m; < 0 means 0.4 x smallest diameter
-    /// (the slab engine: 0.1).
+    /// Verlet skin of the neighbour list built by NBS, m, fixed. < 0 (the default): adaptive
+    /// in 2D, chosen at each list build from the fastest particle's displacement per step u
+    /// since the last build as sqrt(20 d_min u) (the least cost of builds and candidate
+    /// pairs), between 0.1 and 0.8 x the smallest diameter d_min (0.4 to start; saved in
+    /// the state, so restarts continue bit for bit); the slab's default is a fixed 0.1 d_min.
     double neighbourSkin = -1.0;
     /// 2: discs in the x-y plane (the paper's model); 3: spheres in a slab between a front
     /// wall z = 0 and a back wall z = slabDepth, with the box's walls around (docs/model.md,
@@ -187,6 +190,8 @@ public:
     double maxOverlap() const;
     /// Number of neighbour-list builds (NBS calls) so far.
     std::int64_t neighbourListBuilds() const;
+    /// The Verlet skin of the current neighbour list, m (Settings::neighbourSkin).
+    double neighbourSkin() const;
     /// Heap memory held by particle, contact and search arrays, bytes.
     std::size_t memoryBytes() const;
 

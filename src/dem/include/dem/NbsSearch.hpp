@@ -1,6 +1,7 @@
 #pragma once
-// NBS contact detection (Munjiza & Andrews 1998): walks the row and column lists of a
-// CellMapper, testing each particle only against its own and neighbouring cells.
+// Contact detection on a grid of cells (after NBS, Munjiza & Andrews 1998): the particles
+// counting-sorted by cell into contiguous arrays, each tested only against its own and the
+// neighbouring cells, which lie in two contiguous ranges of the sorted arrays.
 
 #include "dem/CellMapper.hpp"
 
@@ -21,10 +22,15 @@ public:
     /// Search grid over the rectangle, cells no smaller than the largest diameter + margin.
     NbsSearch(double xMin, double xMax, double yMin, double yMax, double minCellSize);
 
+    /// The same rectangle with cells no smaller than minCellSize (an adaptive skin's).
+    void setMinCellSize(double minCellSize);
+
     /// All pairs with |x_j - x_i| < r_i + r_j + margin, i < j, in a fixed order (the walk's),
     /// replacing the contents of `pairs`. Requires 2 r_max + margin <= cell size.
     /// Rows are walked by up to nThreads threads in bands and the bands' pairs joined in
     /// row order: the same pairs in the same order for any thread count.
+    /// The walk: cell by cell, each particle of a cell (in particle order) against the later
+    /// ones of its cell and those of the east cell, then of the three cells of the row below.
     void findPairs(const double* x, const double* y, const double* r, std::size_t n,
                    double margin, std::vector<IndexPair>& pairs, int nThreads = 1);
 
@@ -40,24 +46,19 @@ public:
     std::size_t memoryBytes() const;
 
 private:
-    /// What one thread's band of rows needs: its column lists and the pairs it found.
-    struct Band {
-        std::vector<int> headsThisRow, headsRowBelow, columnNext;
-        std::vector<IndexPair> pairs;
-        const double* z = nullptr;   ///< z of the particles in a 3D search
-    };
-    /// Pairs of rows [first, last) into band.pairs (row first - 1 is linked as the row below).
-    /// In 3D (Is3D) z comes in band.z, so that the 2D walk keeps its arguments and its code.
+    /// Pairs of rows [first, last) into `pairs` (the sorted arrays filled).
     template <bool Is3D>
-    void walkRows(int first, int last, const double* x, const double* y, const double* r,
-                  std::size_t n, double margin, Band& band) const;
+    void walkRows(int first, int last, double margin, std::vector<IndexPair>& pairs) const;
     template <bool Is3D>
     void find(const double* x, const double* y, const double* z, const double* r, std::size_t n,
               double margin, std::vector<IndexPair>& pairs, int nThreads);
 
+    double xMin_, xMax_, yMin_, yMax_;
     CellMapper mapper_;
-    std::vector<Band> bands_;
-    std::vector<int> rowCount_;
+    // The particles sorted by cell: cell c's are cellStart_[c] .. cellStart_[c + 1]
+    std::vector<int> cellStart_, cellOf_, id_;
+    std::vector<double> x_, y_, z_, r_;
+    std::vector<std::vector<IndexPair>> bandPairs_;   // per band of rows
 };
 
 /// Test oracle: every pair tested, O(N^2). Same contract as NbsSearch::findPairs, pairs

@@ -122,6 +122,7 @@ public:
     std::size_t contactCount() const { return contactCount_; }
     double maxOverlap() const { return maxOverlap_; }
     std::int64_t neighbourListBuilds() const { return listBuilds_; }
+    double neighbourSkin() const { return skin_; }
     /// Heap memory held by particle, contact and search arrays, bytes.
     std::size_t memoryBytes() const;
     /// Force the particles exert on wall w at the current state (dashpots at the current
