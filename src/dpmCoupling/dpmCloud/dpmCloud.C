@@ -110,9 +110,11 @@ dem::Settings Foam::dpmCloud::demSettings() const
     s.dt = dict_.get<scalar>("deltaT");
     s.nThreads = dict_.lookupOrDefault<label>("nThreads", 1);
 
-    // Verlet skin of the neighbour list (default: the DEM's, 0.4 d_min for
-    // discs, 0.1 d_min in the slab): a wider skin means fewer list builds
-    // but more candidate pairs each step (docs/performance.md, session 9)
+    // Verlet skin of the neighbour list (default: the DEM's, for discs
+    // chosen at each list build from the fastest particle's displacement,
+    // 0.1-0.8 d_min; 0.1 d_min in the slab): a wider skin means fewer list
+    // builds but more candidate pairs each step (docs/performance.md,
+    // sessions 9 and 10). An entry fixes it
     if (dict_.found("neighbourSkin"))
     {
         scalar dMin = GREAT;
