@@ -48,8 +48,8 @@ with open("constant/spheres", "w") as f:
             f.write("0 %.6e %.6e %.6e\n" % (x0 + 3.75e-3, y0 + 3.75e-3, z))
 PY
 runSolver
-grep -q "^Particles: 380 " log.dpmFoam2D || grep -q "380 particles" log.dpmFoam2D \
-    || { grep -i particles log.dpmFoam2D | head; fail "380 spheres expected"; }
+grep -q "^Particles: 380 placed from " log.dpmFoam2D \
+    || { grep "^Particles" log.dpmFoam2D; fail "380 placed spheres expected"; }
 
 for still in 0.01 0.03
 do
