@@ -133,10 +133,33 @@ def wall_times(case):
     return wall, sim, loads
 
 
+def loop_cpu(case, name):
+    """CPU s per simulated s of the time loop, start-up left out: OpenFOAM's
+    ExecutionTime from the first step to the last in log.<solver> (both
+    solvers print it; one thread each)."""
+    path = os.path.join(case, "log." + name)
+    if not os.path.isfile(path):
+        return np.nan, 0
+    text = open(path).read()
+    steps = re.findall(r"^Time = (\S+)\s*$(.*?)^ExecutionTime = (\S+) s", text, re.M | re.S)
+    if len(steps) < 2:
+        return np.nan, len(steps)
+    t = np.array([float(s[0]) for s in steps])
+    cpu = np.array([float(s[2]) for s in steps])
+    # a continued run restarts the clock: add up the runs' own spans
+    total = sim = 0.0
+    for k in range(1, len(t)):
+        if cpu[k] >= cpu[k - 1] and t[k] > t[k - 1]:
+            total += cpu[k] - cpu[k - 1]
+            sim += t[k] - t[k - 1]
+    return total / sim, len(steps)
+
+
 def statistics(case, name, transient):
     field, axis, convert = SOLVERS[name]
     s = {}
     s["wall"], s["sim"], s["loads"] = wall_times(case)
+    s["loopCpu"], s["steps"] = loop_cpu(case, name)
     t, dp = pressure_record(case, convert)
     keep = t > transient + 1e-9
     s["pressureSpan"] = (t[keep][-1] - t[keep][0]) if keep.sum() > 1 else 0.0
@@ -179,6 +202,8 @@ def main():
         print("  wall time %.1f s for %.4g simulated s: %.0f wall s per simulated s"
               " (load before each run: %s)"
               % (s["wall"], s["sim"], s["wall"] / s["sim"], "; ".join(s["loads"])))
+        print("  time loop: %.0f CPU s per simulated s (ExecutionTime over %d steps)"
+              % (s["loopCpu"], s["steps"]))
         print("  statistics after %g s: %d voidage fields, %.3g s of pressure"
               % (s["transient"], s["fields"], s["pressureSpan"]))
         if "bedHeightMean" in s:
@@ -194,7 +219,9 @@ def main():
         return
     of, us = stats["DPMFoam"], stats["dpmFoam2D"]
     print("Ratio of wall times per simulated s, DPMFoam / dpmFoam2D: %.1f"
-          % ((of["wall"] / of["sim"]) / (us["wall"] / us["sim"])))
+          " (time loops' CPU: %.1f)"
+          % ((of["wall"] / of["sim"]) / (us["wall"] / us["sim"]),
+             of["loopCpu"] / us["loopCpu"]))
     short = min(of["pressureSpan"], us["pressureSpan"])
     if short < MIN_STATS:
         print("Too short to compare the beds: %.3g s of statistics, %g s needed"
