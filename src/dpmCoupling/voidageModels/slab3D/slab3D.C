@@ -81,6 +81,7 @@ void Foam::voidageModels::slab3D::updateFields
 (
     const label n,
     const double* d,
+    const label nThreads,
     scalarField& voidage,
     scalarField& phiP
 )
@@ -88,15 +89,16 @@ void Foam::voidageModels::slab3D::updateFields
     const scalar Vc = grid_.cellVolume();
 
     phiP = 0;
-    for (label i = 0; i < n; ++i)
-    {
-        const scalar r = 0.5*d[i];
-        const scalar VpByVc = 4*constant::mathematical::pi*r*r*r/(3*Vc);
-        for (label k = 4*i; k < 4*i + counts_[i]; ++k)
+    forEachOverlap
+    (
+        n, voidage.size(), nThreads,
+        [&](const label i, const label k, const label c)
         {
-            phiP[cells_[k]] += VpByVc*fractions_[k];
+            const scalar r = 0.5*d[i];
+            const scalar VpByVc = 4*constant::mathematical::pi*r*r*r/(3*Vc);
+            phiP[c] += VpByVc*fractions_[k];
         }
-    }
+    );
 
     forAll(voidage, c)
     {
