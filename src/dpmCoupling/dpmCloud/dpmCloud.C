@@ -559,13 +559,17 @@ void Foam::dpmCloud::mapToGas()
     voidageModel_->forEachOverlap
     (
         n, Kc.size(), dem_->settings().nThreads,
-        [&](const label i, const label k, const label c)
+        [&](const label i)
         {
             const vector F =
                 meanForce ? vector(FX[i], FY[i], 0) : exchangedForce(i);
-            const scalar f = fractions[k]/Vc;
-            Kc[c] += f*K_[i];
-            Fp[c] += f*F;
+            const scalar K = K_[i];
+            return [&, F, K](const label k, const label c)
+            {
+                const scalar f = fractions[k]/Vc;
+                Kc[c] += f*K;
+                Fp[c] += f*F;
+            };
         }
     );
     Kc_.correctBoundaryConditions();

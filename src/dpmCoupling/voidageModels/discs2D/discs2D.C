@@ -71,13 +71,16 @@ void Foam::voidageModels::discs2D::updateFields
     forEachOverlap
     (
         n, voidage.size(), nThreads,
-        [&](const label i, const label k, const label c)
+        [&](const label i)
         {
             const scalar r = 0.5*d[i];
             const scalar discArea = constant::mathematical::pi*r*r;
             const scalar VpByVc = discArea*4*r/(3*Vc);
-            porosity2D_[c] -= fractions_[k]*discArea/cellArea;
-            phiP[c] += VpByVc*fractions_[k];
+            return [&, discArea, VpByVc](const label k, const label c)
+            {
+                porosity2D_[c] -= fractions_[k]*discArea/cellArea;
+                phiP[c] += VpByVc*fractions_[k];
+            };
         }
     );
 

@@ -92,11 +92,14 @@ void Foam::voidageModels::slab3D::updateFields
     forEachOverlap
     (
         n, voidage.size(), nThreads,
-        [&](const label i, const label k, const label c)
+        [&](const label i)
         {
             const scalar r = 0.5*d[i];
             const scalar VpByVc = 4*constant::mathematical::pi*r*r*r/(3*Vc);
-            phiP[c] += VpByVc*fractions_[k];
+            return [&, VpByVc](const label k, const label c)
+            {
+                phiP[c] += VpByVc*fractions_[k];
+            };
         }
     );
 
