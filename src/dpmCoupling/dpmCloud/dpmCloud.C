@@ -555,23 +555,21 @@ void Foam::dpmCloud::mapToGas()
         formulation_ == couplingFormulation::B && !frozen_;
     const double* FX = dem_->meanFluidForceX();
     const double* FY = dem_->meanFluidForceY();
+    const labelList& counts = voidageModel_->counts();
+    const labelList& cells = voidageModel_->cells();
     const scalarList& fractions = voidageModel_->fractions();
-    voidageModel_->forEachOverlap
-    (
-        n, Kc.size(), dem_->settings().nThreads,
-        [&](const label i)
+    for (label i = 0; i < n; ++i)
+    {
+        const vector F =
+            meanForce ? vector(FX[i], FY[i], 0) : exchangedForce(i);
+        for (label k = 4*i; k < 4*i + counts[i]; ++k)
         {
-            const vector F =
-                meanForce ? vector(FX[i], FY[i], 0) : exchangedForce(i);
-            const scalar K = K_[i];
-            return [&, F, K](const label k, const label c)
-            {
-                const scalar f = fractions[k]/Vc;
-                Kc[c] += f*K;
-                Fp[c] += f*F;
-            };
+            const label c = cells[k];
+            const scalar f = fractions[k]/Vc;
+            Kc[c] += f*K_[i];
+            Fp[c] += f*F;
         }
-    );
+    }
     Kc_.correctBoundaryConditions();
     Fp_.correctBoundaryConditions();
 
@@ -594,7 +592,7 @@ void Foam::dpmCloud::updateVoidage()
     updateOverlaps();
     voidageModel_->updateFields
     (
-        size(), dem_->diameter(), dem_->settings().nThreads,
+        size(), dem_->diameter(),
         voidage_.primitiveFieldRef(), particleFraction_.primitiveFieldRef()
     );
     particleFraction_.correctBoundaryConditions();

@@ -57,7 +57,6 @@ void Foam::voidageModels::discs2D::updateFields
 (
     const label n,
     const double* d,
-    const label nThreads,
     scalarField& voidage,
     scalarField& phiP
 )
@@ -68,21 +67,18 @@ void Foam::voidageModels::discs2D::updateFields
     porosity2D_.setSize(voidage.size());
     porosity2D_ = 1;
     phiP = 0;
-    forEachOverlap
-    (
-        n, voidage.size(), nThreads,
-        [&](const label i)
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar r = 0.5*d[i];
+        const scalar discArea = constant::mathematical::pi*r*r;
+        const scalar VpByVc = discArea*4*r/(3*Vc);
+        for (label k = 4*i; k < 4*i + counts_[i]; ++k)
         {
-            const scalar r = 0.5*d[i];
-            const scalar discArea = constant::mathematical::pi*r*r;
-            const scalar VpByVc = discArea*4*r/(3*Vc);
-            return [&, discArea, VpByVc](const label k, const label c)
-            {
-                porosity2D_[c] -= fractions_[k]*discArea/cellArea;
-                phiP[c] += VpByVc*fractions_[k];
-            };
+            const label c = cells_[k];
+            porosity2D_[c] -= fractions_[k]*discArea/cellArea;
+            phiP[c] += VpByVc*fractions_[k];
         }
-    );
+    }
 
     forAll(voidage, c)
     {

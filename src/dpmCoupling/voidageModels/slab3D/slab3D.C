@@ -81,7 +81,6 @@ void Foam::voidageModels::slab3D::updateFields
 (
     const label n,
     const double* d,
-    const label nThreads,
     scalarField& voidage,
     scalarField& phiP
 )
@@ -89,19 +88,15 @@ void Foam::voidageModels::slab3D::updateFields
     const scalar Vc = grid_.cellVolume();
 
     phiP = 0;
-    forEachOverlap
-    (
-        n, voidage.size(), nThreads,
-        [&](const label i)
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar r = 0.5*d[i];
+        const scalar VpByVc = 4*constant::mathematical::pi*r*r*r/(3*Vc);
+        for (label k = 4*i; k < 4*i + counts_[i]; ++k)
         {
-            const scalar r = 0.5*d[i];
-            const scalar VpByVc = 4*constant::mathematical::pi*r*r*r/(3*Vc);
-            return [&, VpByVc](const label k, const label c)
-            {
-                phiP[c] += VpByVc*fractions_[k];
-            };
+            phiP[cells_[k]] += VpByVc*fractions_[k];
         }
-    );
+    }
 
     forAll(voidage, c)
     {
