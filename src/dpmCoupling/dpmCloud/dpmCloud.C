@@ -283,6 +283,7 @@ Foam::dpmCloud::dpmCloud
         "Invalid particle settings",
         [&]{ dem_.reset(new dem::Simulation(settings)); }
     );
+    drag_->setThreads(settings.nThreads);
     checkSettings(gas, mode);
 
     subSteps();         // the DEM step must divide the CFD step
@@ -422,6 +423,7 @@ void Foam::dpmCloud::interpolateGas
     }
 
     const label n = size();
+    const label nThreads = dem_->settings().nThreads;
     const scalar pi = constant::mathematical::pi;
     const scalarField& eps = voidage_.primitiveField();
     const vectorField& Uc = U.primitiveField();
@@ -432,13 +434,17 @@ void Foam::dpmCloud::interpolateGas
     const double* vy = dem_->vy();
     const double* d = dem_->diameter();
 
-    scalarField& epsP = voidageP_;
-    epsP.setSize(n);
+    voidageP_.setSize(n);
     gasVelocityP_.setSize(n);
-    scalarField dP(n), slip(n);
+    diameterP_.setSize(n);
+    slipP_.setSize(n);
     double* uX = dem_->gasVelocityX();
     double* uY = dem_->gasVelocityY();
-    #pragma omp parallel for num_threads(dem_->settings().nThreads) schedule(static)
+    double* fX = dem_->extraForceX();
+    double* fY = dem_->extraForceY();
+    // One pass for all the per-particle inputs: gas, slip, and the
+    // buoyancy of the hydrostatic gas pressure
+    #pragma omp parallel for num_threads(nThreads) schedule(static)
     for (label i = 0; i < n; ++i)
     {
         label cells[4];
@@ -451,19 +457,22 @@ void Foam::dpmCloud::interpolateGas
             e += w[k]*eps[cells[k]];
             u += w[k]*Uc[cells[k]];
         }
-        epsP[i] = e;
+        voidageP_[i] = e;
         gasVelocityP_[i] = u;
-        dP[i] = d[i];
+        diameterP_[i] = d[i];
         uX[i] = u.x();
         uY[i] = u.y();
         const scalar sx = u.x() - (frozen_ ? 0 : vx[i]);
         const scalar sy = u.y() - (frozen_ ? 0 : vy[i]);
-        slip[i] = std::sqrt(sx*sx + sy*sy);     // not hypot: 5x dearer, no gain here
+        slipP_[i] = std::sqrt(sx*sx + sy*sy);   // not hypot: 5x dearer, no gain here
+        const scalar Vp = pi*d[i]*d[i]*d[i]/6;
+        fX[i] = -rhoGas_*Vp*g_.x();
+        fY[i] = -rhoGas_*Vp*g_.y();
     }
 
     if (slab_)
     {
-        slabGasInputs(slip);
+        slabGasInputs(slipP_);
     }
     if (mixtureNeeded_)
     {
@@ -471,18 +480,13 @@ void Foam::dpmCloud::interpolateGas
     }
 
     K_.setSize(n);
-    drag_->dragCoefficient(epsP, dP, slip, mixtureP_, K_);
+    drag_->dragCoefficient(voidageP_, diameterP_, slipP_, mixtureP_, K_);
 
-    // Drag, and the buoyancy of the hydrostatic gas pressure
     double* Kd = dem_->dragCoefficient();
-    double* fX = dem_->extraForceX();
-    double* fY = dem_->extraForceY();
+    #pragma omp parallel for num_threads(nThreads) schedule(static)
     for (label i = 0; i < n; ++i)
     {
-        const scalar Vp = pi*d[i]*d[i]*d[i]/6;
         Kd[i] = K_[i];
-        fX[i] = -rhoGas_*Vp*g_.x();
-        fY[i] = -rhoGas_*Vp*g_.y();
     }
     if (formulation_ == couplingFormulation::A)
     {

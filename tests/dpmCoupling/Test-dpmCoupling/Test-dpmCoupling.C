@@ -66,6 +66,19 @@ int main(int argc, char *argv[])
         check("disc below a line", discRectangleOverlap(0, 0, r, -1, 1, -1, -h), segment, 1e-12);
         check("disc quarter", discRectangleOverlap(0, 0, r, 0, 1, 0, 1), 0.25*pi*r*r, 1e-12);
         check("disc whole", discRectangleOverlap(0, 0, r, -1, 1, -1, 1), pi*r*r, 1e-12);
+
+        // The corner with its end at a made once (the grid's) gives the
+        // general form's bits, on every branch (a, b across the disc)
+        Random rnd(3);
+        label differ = 0;
+        for (label k = 0; k < 100000; ++k)
+        {
+            const scalar a = (2.4*rnd.sample01<scalar>() - 1.2)*r;
+            const scalar b = (2.4*rnd.sample01<scalar>() - 1.2)*r;
+            const discOverlapDetail::chordEnd A(a, r);
+            differ += discQuadrantArea(A, b, r) != discQuadrantArea(a, b, r);
+        }
+        check("disc corner from a shared end, bit for bit", differ, 0, 0);
     }
 
     // The grid shares each disc out exactly: areas add up to pi r^2

@@ -70,6 +70,7 @@ void Foam::dragModels::Beetstra::dragCoefficient
 
     const scalar pi = constant::mathematical::pi;
 
+    #pragma omp parallel for num_threads(nThreads_) schedule(static)
     forAll(K, i)
     {
         const scalar eps = voidage[i];

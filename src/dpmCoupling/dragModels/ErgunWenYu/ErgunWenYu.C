@@ -39,6 +39,7 @@ void Foam::dragModels::ErgunWenYu::dragCoefficient
 {
     const scalar pi = constant::mathematical::pi;
 
+    #pragma omp parallel for num_threads(nThreads_) schedule(static)
     forAll(K, i)
     {
         const scalar eps = voidage[i];

@@ -35,6 +35,7 @@ void Foam::dragModels::GidaspowBlend::dragCoefficient
 {
     const scalar pi = constant::mathematical::pi;
 
+    #pragma omp parallel for num_threads(nThreads_) schedule(static)
     forAll(K, i)
     {
         const scalar eps = voidage[i];

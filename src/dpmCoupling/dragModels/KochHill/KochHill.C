@@ -54,6 +54,7 @@ void Foam::dragModels::KochHill::dragCoefficient
 {
     const scalar pi = constant::mathematical::pi;
 
+    #pragma omp parallel for num_threads(nThreads_) schedule(static)
     forAll(K, i)
     {
         const scalar eps = voidage[i];

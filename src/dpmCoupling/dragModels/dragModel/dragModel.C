@@ -9,5 +9,6 @@ namespace Foam
 Foam::dragModel::dragModel(const scalar rho, const scalar mu)
 :
     rho_(rho),
-    mu_(mu)
+    mu_(mu),
+    nThreads_(1)
 {}
