@@ -113,12 +113,8 @@ Foam::scalar Foam::dpmCloud::terminalVelocity
     const scalar g
 ) const
 {
-    // Voidage 1: its own diameter is the mixture's
-    return velocityCarrying
-    (
-        1, unitWeight(classi), classDiameters()[classi],
-        buoyantWeight(classi, g)
-    );
+    // A bed of voidage 1 of its own class
+    return carryingVelocityAlone(classi, 1, g);
 }
 
 
