@@ -114,7 +114,7 @@ Foam::scalar Foam::dpmCloud::terminalVelocity
 ) const
 {
     // A bed of voidage 1 of its own class
-    return carryingVelocityAlone(classi, 1, g);
+    return carryingVelocity(classi, 1, g, true);
 }
 
 
@@ -122,26 +122,14 @@ Foam::scalar Foam::dpmCloud::carryingVelocity
 (
     const label classi,
     const scalar eps,
-    const scalar g
+    const scalar g,
+    const bool alone
 ) const
 {
     return velocityCarrying
     (
-        eps, unitWeight(classi), recipeSauterDiameter(), buoyantWeight(classi, g)
-    );
-}
-
-
-Foam::scalar Foam::dpmCloud::carryingVelocityAlone
-(
-    const label classi,
-    const scalar eps,
-    const scalar g
-) const
-{
-    return velocityCarrying
-    (
-        eps, unitWeight(classi), classDiameters()[classi],
+        eps, unitWeight(classi),
+        alone ? classDiameters()[classi] : recipeSauterDiameter(),
         buoyantWeight(classi, g)
     );
 }
