@@ -15,7 +15,11 @@ Description
     solved with PIMPLE on a one-cell-thick Cartesian mesh; p_rgh is the
     pressure less the gas's hydrostatic head, relative to the outlet. The particles: the DEM of
     src/dem advanced in sub-steps each CFD step, with the drag coupled
-    semi-implicitly. See docs/model.md.
+    semi-implicitly. In the sequential schedule (default) the gas follows
+    the particles within a step; in the concurrent one (`couplingSchedule`
+    in constant/particleProperties) it advances beside them, on a thread of
+    its own, with their voidage and reaction of the step before. See
+    docs/model.md.
 
 Usage
     dpmFoam2D [-cloud name] [-postProcess [-func name]]
@@ -88,48 +92,60 @@ int main(int argc, char *argv[])
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
-        // Particles: gas at the particles, DEM sub-steps, reaction on the gas
-        timers.start();
-        particles.interpolateGas(U, p_rgh);
-        timers.stop(solverTimers::coupling);
-
-        timers.start();
-        particles.advance();
-        timers.stop(solverTimers::dem);
-
-        timers.start();
-        particles.mapToGas();
-        voidagef = fvc::interpolate(voidage);
-        if (particles.formulation() == couplingFormulation::A)
+        if (particles.concurrentStep())
         {
-            gasFractionf = fvc::interpolate(particles.gasFraction());
-        }
-        timers.stop(solverTimers::coupling);
+            // The particles' voidage and reaction of the last step for the
+            // gas, the gas at the particles; then the DEM advances on a
+            // thread of its own while the gas advances on this one
+            timers.start();
+            particles.updateVoidage();
+            #include "interpolateVoidage.H"
+            particles.interpolateGas(U, p_rgh);
+            timers.stop(solverTimers::coupling);
 
-        // Gas: PIMPLE
-        timers.start();
-        while (pimple.loop())
+            timers.start();
+            particles.advanceBeside
+            (
+                [&]
+                {
+                    const auto gasStart = std::chrono::steady_clock::now();
+                    #include "gasStep.H"
+                    timers.addGasBesideDem
+                    (
+                        std::chrono::duration<scalar>
+                        (
+                            std::chrono::steady_clock::now() - gasStart
+                        ).count()
+                    );
+                }
+            );
+            timers.stop(solverTimers::demBesideGas);
+
+            timers.start();
+            particles.exchangeToGas();
+            timers.stop(solverTimers::coupling);
+        }
+        else
         {
-            if (faceMomentum)
-            {
-                #include "pUf/UEqn.H"
+            // Particles: gas at the particles, DEM sub-steps, reaction on
+            // the gas; then the gas with the particles' new state
+            timers.start();
+            particles.interpolateGas(U, p_rgh);
+            timers.stop(solverTimers::coupling);
 
-                while (pimple.correct())
-                {
-                    #include "pUf/pEqn.H"
-                }
-            }
-            else
-            {
-                #include "pU/UEqn.H"
+            timers.start();
+            particles.advance();
+            timers.stop(solverTimers::dem);
 
-                while (pimple.correct())
-                {
-                    #include "pU/pEqn.H"
-                }
-            }
+            timers.start();
+            particles.mapToGas();
+            #include "interpolateVoidage.H"
+            timers.stop(solverTimers::coupling);
+
+            timers.start();
+            #include "gasStep.H"
+            timers.stop(solverTimers::gas);
         }
-        timers.stop(solverTimers::gas);
 
         timers.start();
         particles.writeParticlesIfDue();

@@ -166,17 +166,22 @@ void Foam::caseChecks::threadCount
 (
     const dictionary& dict,
     const string& where,
-    const label nThreads
+    const label nThreads,
+    const bool gasThread
 )
 {
     const label cores = availableCores();
-    if (nThreads > cores)
+    const label extra = gasThread ? 1 : 0;
+    if (nThreads + extra > cores)
     {
         IOWarningInFunction(dict)
             << "nThreads " << nThreads << " in " << where.c_str()
+            << (gasThread ? ", and the gas's own thread of the concurrent"
+                " schedule," : "")
             << " is above the " << cores << " cores this run may use: the"
             << " threads would take turns on them, which makes a run many"
-            << " times slower; use nThreads " << cores << " or fewer" << endl;
+            << " times slower; use nThreads " << max(cores - extra, 1)
+            << " or fewer" << endl;
     }
 }
 

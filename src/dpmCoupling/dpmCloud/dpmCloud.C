@@ -206,6 +206,9 @@ Foam::dpmCloud::dpmCloud
     classNames_(dict_.subDict("classes").toc()),
     drag_(dragModel::New(dict_, gas.rho(), gas.mu())),
     formulation_(readCouplingFormulation(dict_)),
+    schedule_(readCouplingSchedule(dict_)),
+    couplingThreads_(1),
+    exchangeReady_(false),
     frozen_(dict_.lookupOrDefault<bool>("frozen", false)),
     sortInterval_
     (
@@ -239,27 +242,29 @@ Foam::dpmCloud::dpmCloud
     mixtureNeeded_(drag_->needsMixture()),
     Kc_
     (
-        fieldIO("Kc", mesh, false),
+        fieldIO("Kc", mesh, keepsExchange(mode)),
         mesh,
         dimensionedScalar(dimDensity/dimTime, Zero),
         zeroGradientFvPatchScalarField::typeName
     ),
     Fp_
     (
-        fieldIO("Fp", mesh, false),
+        fieldIO("Fp", mesh, keepsExchange(mode)),
         mesh,
         dimensionedVector(dimForce/dimVolume, Zero),
         zeroGradientFvPatchVectorField::typeName
     ),
     Ustar_
     (
-        fieldIO("Ustar", mesh, false),
+        fieldIO("Ustar", mesh, keepsExchange(mode)),
         mesh,
         dimensionedVector(dimVelocity, Zero),
         zeroGradientFvPatchVectorField::typeName
-    )
+    ),
+    dtStep_(mesh.time().deltaTValue())
 {
     Info<< "Coupling: " << formulationDescription(formulation_).c_str()
+        << nl << "Coupling: " << scheduleDescription(schedule_).c_str()
         << nl << "Coupling: " << voidageModel_->description().c_str()
         << endl;
 
@@ -283,7 +288,10 @@ Foam::dpmCloud::dpmCloud
         "Invalid particle settings",
         [&]{ dem_.reset(new dem::Simulation(settings)); }
     );
-    drag_->setThreads(settings.nThreads);
+    couplingThreads_ =
+        settings.nThreads
+      + (schedule_ == couplingSchedule::concurrent ? 1 : 0);
+    drag_->setThreads(couplingThreads_);
     checkSettings(gas, mode);
 
     subSteps();         // the DEM step must divide the CFD step
@@ -307,6 +315,11 @@ Foam::dpmCloud::dpmCloud
     // Keep the start voidage as the old-time level of the first step, as a
     // run that went through this time would (restarts continue exactly)
     voidage_.oldTime();
+
+    if (keepsExchange(mode))
+    {
+        readExchange();
+    }
 }
 
 
@@ -422,8 +435,9 @@ void Foam::dpmCloud::interpolateGas
         updateOverlaps();
     }
 
+    dtStep_ = mesh_.time().deltaTValue();
     const label n = size();
-    const label nThreads = dem_->settings().nThreads;
+    const label nThreads = couplingThreads_;
     const scalar pi = constant::mathematical::pi;
     const scalarField& eps = voidage_.primitiveField();
     const vectorField& Uc = U.primitiveField();
@@ -492,16 +506,17 @@ void Foam::dpmCloud::interpolateGas
     {
         addPressureGradientForce(p_rgh);
     }
-    // The boundary values too: the pressure equation takes the explicit
-    // force Kc U* - Fp on the distributor face (constrainPressure); with U*
-    // left 0 there it counted half the bottom row's drag a second time in
-    // the distributor's pressure (docs/model.md, "The gas-side excess")
-    Ustar_.primitiveFieldRef() = Uc;
-    Ustar_.correctBoundaryConditions();
+    gasVelocitySeen_ = Uc;
 }
 
 
 void Foam::dpmCloud::advance()
+{
+    guarded(advanceError, [&]{ advanceParticles(); });
+}
+
+
+void Foam::dpmCloud::advanceParticles()
 {
     if (frozen_)
     {
@@ -520,15 +535,7 @@ void Foam::dpmCloud::advance()
         return;
     }
 
-    const scalar dtGas = mesh_.time().deltaTValue();
-    // A particle leaves the box only when pushed through a wall in one step
-    guarded
-    (
-        "The particles cannot advance (a particle that left the box went"
-        " through a wall: a gas too fast, U0 of constant/gasProperties, or"
-        " contacts too soft for the speeds, kn of contact)",
-        [&]{ dem_->advance(dtGas); }
-    );
+    dem_->advance(dtStep_);
 }
 
 
@@ -542,6 +549,13 @@ Foam::vector Foam::dpmCloud::fluidForce(const label i) const
 
 
 void Foam::dpmCloud::mapToGas()
+{
+    exchangeToGas();
+    updateVoidage();
+}
+
+
+void Foam::dpmCloud::exchangeToGas()
 {
     // The reaction on the gas, shared by the cells as the particle was at
     // the start of the step, where the gas was interpolated
@@ -574,8 +588,13 @@ void Foam::dpmCloud::mapToGas()
     }
     Kc_.correctBoundaryConditions();
     Fp_.correctBoundaryConditions();
-
-    updateVoidage();
+    // The boundary values too: the pressure equation takes the explicit
+    // force Kc U* - Fp on the distributor face (constrainPressure); with U*
+    // left 0 there it counted half the bottom row's drag a second time in
+    // the distributor's pressure (docs/model.md, "The gas-side excess")
+    Ustar_.primitiveFieldRef() = gasVelocitySeen_;
+    Ustar_.correctBoundaryConditions();
+    exchangeReady_ = true;
 }
 
 
@@ -584,7 +603,7 @@ void Foam::dpmCloud::updateOverlaps()
     voidageModel_->updateOverlaps
     (
         size(), dem_->x(), dem_->y(), dem_->diameter(),
-        dem_->settings().nThreads
+        couplingThreads_
     );
 }
 

@@ -81,7 +81,8 @@ void Foam::dpmCloud::checkSettings
 
     caseChecks::threadCount
     (
-        dict_, "constant/particleProperties", dem_->settings().nThreads
+        dict_, "constant/particleProperties", dem_->settings().nThreads,
+        schedule_ == couplingSchedule::concurrent
     );
 
     if (mode != startMode::run) return;

@@ -52,7 +52,7 @@ void Foam::dpmCloud::addPressureGradientForce(const volScalarField& p_rgh)
     double* Kd = dem_->dragCoefficient();
     double* fX = dem_->extraForceX();
     double* fY = dem_->extraForceY();
-    #pragma omp parallel for num_threads(dem_->settings().nThreads) schedule(static)
+    #pragma omp parallel for num_threads(couplingThreads_) schedule(static)
     for (label i = 0; i < n; ++i)
     {
         label cells[4];

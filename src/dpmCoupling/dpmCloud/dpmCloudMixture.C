@@ -51,7 +51,7 @@ void Foam::dpmCloud::interpolateMixture()
 
     scalarField& dMean = mixtureP_.sauterDiameter;
     dMean.setSize(n);
-    #pragma omp parallel for num_threads(dem_->settings().nThreads) schedule(static)
+    #pragma omp parallel for num_threads(couplingThreads_) schedule(static)
     for (label i = 0; i < n; ++i)
     {
         label cells[4];

@@ -8,7 +8,8 @@ Foam::solverTimers::solverTimers(const Time& runTime, const scalar reportInterva
     lastReport_(wallStart_),
     partStart_(wallStart_),
     reportInterval_(reportInterval),
-    seconds_{0, 0, 0, 0}
+    seconds_{0, 0, 0, 0, 0},
+    gasBesideDem_(0)
 {}
 
 
@@ -56,13 +57,22 @@ void Foam::solverTimers::summary() const
         Info<< "Nothing to run: the start time is the end time" << endl;
         return;
     }
-    const char* names[nParts] = {"DEM", "coupling", "gas", "output"};
+    const char* names[nParts] =
+        {"DEM", "coupling", "gas", "output", "DEM beside gas"};
     Info<< "Wall time " << wall << " s for " << simulated << " simulated s ("
         << wall/simulated << " wall s per simulated s):";
     for (int p = 0; p < nParts; ++p)
     {
+        if (p == demBesideGas && seconds_[p] == 0)
+        {
+            continue;       // the sequential schedule
+        }
         Info<< ' ' << names[p] << ' ' << seconds_[p] << " s ("
             << label(100*seconds_[p]/wall) << "%)";
+    }
+    if (seconds_[demBesideGas] > 0)
+    {
+        Info<< ", of which the gas " << gasBesideDem_ << " s";
     }
     Info<< endl;
 }

@@ -1,0 +1,101 @@
+#!/usr/bin/python3
+"""The tables of benchmarks/couplingSchedule/Allrun (see there):
+  compare.py <work dir> <startTime> <short endTime>"""
+
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)),
+                                "..", "..", "bin"))
+import dpmParticleIO as pio  # noqa: E402
+
+BLOCK = 0.5     # s, the block of the block means
+T95 = {1: 12.71, 2: 4.30, 3: 3.18, 4: 2.78, 5: 2.57, 6: 2.45, 7: 2.36,
+       8: 2.31, 9: 2.26, 10: 2.23, 12: 2.18, 15: 2.13, 20: 2.09, 30: 2.04}
+
+
+def t95(dof):
+    keys = sorted(k for k in T95 if k <= dof)
+    return T95[keys[-1]] if keys else float("nan")
+
+
+def positions(case, t):
+    p = pio.read_particles(os.path.join(case, "particles",
+                                        pio.time_name(t) + ".h5"))
+    order = np.argsort(p["id"])
+    return p["position"][order]
+
+
+def block_mean(time, value, start):
+    """Mean and 95 % half-width from the means of BLOCK-s blocks."""
+    keep = (time > start + 1e-9) & np.isfinite(value)
+    time, value = time[keep], value[keep]
+    blocks = np.floor((time - start - 1e-9) / BLOCK).astype(int)
+    means = np.array([value[blocks == b].mean() for b in np.unique(blocks)])
+    n = len(means)
+    half = t95(n - 1) * means.std(ddof=1) / np.sqrt(n) if n > 1 else np.nan
+    return means.mean(), half
+
+
+def probe(case):
+    """(time, p_rgh) of the probe over all its start times (OpenFOAM's probes
+    table: its header names no columns); a restart's rows replace the
+    earlier run's from its start on."""
+    root = os.path.join(case, "postProcessing", "distributorPressure")
+    parts = sorted((float(s), np.loadtxt(os.path.join(root, s, "p_rgh"), ndmin=2))
+                   for s in os.listdir(root))
+    rows = [part[part[:, 0] < (parts[i + 1][0] if i + 1 < len(parts) else np.inf)]
+            for i, (_, part) in enumerate(parts)]
+    table = np.concatenate(rows)
+    return table[:, 0], table[:, 1]
+
+
+def series(case):
+    out = {}
+    out["pressure at the distributor [Pa]"] = probe(case)
+    m = pio.read_postprocessing(case, "laceyIndex", "laceyIndex.dat", quiet=True)
+    out["Lacey's M"] = (m["Time"], m["M"])
+    bed = pio.read_dat(os.path.join(case, "postProcessing", "bedStatistics",
+                                    "0", "bed.dat"))
+    for k, name in (("bedHeight", "bed height [m]"),
+                    ("bubbleFraction", "bubble fraction"),
+                    ("emulsionVoidage", "emulsion voidage")):
+        out[name] = (bed["Time"], bed[k])
+    part = pio.read_dat(os.path.join(case, "postProcessing", "bedStatistics",
+                                      "0", "particles.dat"))
+    for k, name in (("speedRmsSmall", "rms speed, small [m/s]"),
+                    ("speedRmsLarge", "rms speed, large [m/s]")):
+        out[name] = (part["Time"], part[k])
+    return out
+
+
+def main():
+    work, start, short = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
+    ref = positions(os.path.join(work, "sequential"), short)
+    print("## %.3g s from the state at %g s: particle positions against the"
+          " sequential schedule's\n" % (short - start, start))
+    print("| run | rms difference [m] | max [m] |\n| --- | --- | --- |")
+    for name, label in (("concurrent", "concurrent schedule"),
+                        ("halfStep", "sequential, CFD step halved")):
+        d = np.linalg.norm(positions(os.path.join(work, name), short) - ref,
+                           axis=1)
+        print("| %s | %.2g | %.2g |" % (label, np.sqrt((d * d).mean()), d.max()))
+
+    seq, conc = (series(os.path.join(work, n))
+                 for n in ("sequential", "concurrent"))
+    print("\n## Time means after %g s (95 %% intervals of %g-s block means)\n"
+          % (short, BLOCK))
+    print("| quantity | sequential | concurrent | intervals overlap |")
+    print("| --- | --- | --- | --- |")
+    for name in seq:
+        a, ha = block_mean(*seq[name], short)
+        b, hb = block_mean(*conc[name], short)
+        overlap = abs(a - b) <= ha + hb
+        print("| %s | %.4g +- %.2g | %.4g +- %.2g | %s |"
+              % (name, a, ha, b, hb, "yes" if overlap else "NO"))
+
+
+if __name__ == "__main__":
+    main()
