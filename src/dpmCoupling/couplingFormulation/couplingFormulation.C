@@ -1,5 +1,5 @@
 #include "couplingFormulation.H"
-#include "OStringStream.H"
+#include "choiceEntry.H"
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
@@ -8,34 +8,13 @@ Foam::couplingFormulation Foam::readCouplingFormulation
     const dictionary& dict
 )
 {
-    const word key("formulation");
-    if (!dict.found(key, keyType::LITERAL))
-    {
-        return couplingFormulation::B;
-    }
-
-    // The tokens, not a word: `formulation 1;` gets the same message
-    ITstream& is = dict.lookup(key, keyType::LITERAL);
-    const tokenList& tokens = is;
-    if (tokens.size() == 1 && tokens[0].isWord())
-    {
-        if (tokens[0].wordToken() == "A") return couplingFormulation::A;
-        if (tokens[0].wordToken() == "B") return couplingFormulation::B;
-    }
-
-    OStringStream value;
-    forAll(tokens, i)
-    {
-        value<< (i ? " " : "") << tokens[i];
-    }
-    FatalIOErrorInFunction(is)
-        << "Entry '" << key << "' = " << value.str().c_str() << " in "
-        << dict.name()
-        << " is not allowed; allowed: B (the gas sees the whole pressure"
-        << " gradient, the paper's, default) or A (particles also feel"
-        << " -V_p grad p, the gas eps grad p)" << exit(FatalIOError);
-
-    return couplingFormulation::B;
+    const word choice = choiceEntry
+    (
+        dict, "formulation", {"A", "B"}, "B",
+        "B (the gas sees the whole pressure gradient, the paper's, default)"
+        " or A (particles also feel -V_p grad p, the gas eps grad p)"
+    );
+    return choice == "A" ? couplingFormulation::A : couplingFormulation::B;
 }
 
 
