@@ -3,6 +3,8 @@
 #include "dem/SlabSystem.hpp"
 #include "dem/System.hpp"
 
+#include "PairGroups.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -163,30 +165,12 @@ void SlabSystem::computePairForces(double historyDt)
     auto group = [&](int gr, std::size_t& touching, double& maxOverlap) {
         for (Index k = groupStart[gr]; k < groupStart[gr + 1]; ++k) pairForce(k, touching, maxOverlap);
     };
-    // The groups of ContactList.hpp: a particle gets its forces in the same order whatever
-    // the thread count.
-    std::size_t touching = 0;
-    double maxOverlap = 0.0;
-#pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
-    reduction(max : maxOverlap)
-    {
-#pragma omp for schedule(static)
-        for (int b = 0; b < nPairBlocks; ++b) {
-            const std::size_t first = pairBlockBegin(b, n);
-            const std::size_t last = pairBlockBegin(b + 1, n);
-            for (auto* a : {&p.fx, &p.fy, &p.fz, &p.tx, &p.ty, &p.tz}) {
-                std::fill(a->begin() + first, a->begin() + last, 0.0);
-            }
-            group(b, touching, maxOverlap);
+    auto zeroBlock = [&](std::size_t first, std::size_t last) {
+        for (auto* a : {&p.fx, &p.fy, &p.fz, &p.tx, &p.ty, &p.tz}) {
+            std::fill(a->begin() + first, a->begin() + last, 0.0);
         }
-#pragma omp for schedule(static)
-        for (int m = 0; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
-#pragma omp for schedule(static)
-        for (int m = 1; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
-    }
-    group(nPairGroups - 1, touching, maxOverlap);
-    contactCount_ = touching;
-    maxOverlap_ = maxOverlap;
+    };
+    sumPairGroups(settings_.nThreads, n, zeroBlock, group, contactCount_, maxOverlap_);
 }
 
 void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)

@@ -1,5 +1,7 @@
 #include "dem/System.hpp"
 
+#include "PairGroups.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -118,11 +120,9 @@ void System::computePairForces(double historyDt)
         maxOverlap = std::max(maxOverlap, g.overlap);
     };
 
-    // Groups that share no particle run in parallel: the blocks, then the boundaries
-    // between even and odd blocks, then between odd and even ones; the rest on one thread.
-    // A particle gets its forces in the same order whatever the thread count.
-    // Two passes per group: the touching pairs picked out without a branch (most candidates
-    // do not touch, and a branch per pair mispredicts), then their forces in list order.
+    // The groups as sumPairGroups runs them. Two passes per group: the touching pairs
+    // picked out without a branch (most candidates do not touch, and a branch per pair
+    // mispredicts), then their forces in list order.
     touchingScratch_.resize(pairs_.size());   // (a loaded state's list has no build here)
     int* touchingPairs = touchingScratch_.data();
     auto group = [&](int g, std::size_t& touching, double& maxOverlap) {
@@ -142,30 +142,12 @@ void System::computePairForces(double historyDt)
         }
         for (int q = 0; q < m; ++q) pairForce(picked[q], touching, maxOverlap);
     };
-    std::size_t touching = 0;
-    double maxOverlap = 0.0;
-#pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
-    reduction(max : maxOverlap)
-    {
-#pragma omp for schedule(static)
-        for (int b = 0; b < nPairBlocks; ++b) {
-            // Zeroed by the thread that sums them (and that kicks these particles next),
-            // so the sums stay in its core's cache
-            const std::size_t first = pairBlockBegin(b, n);
-            const std::size_t last = pairBlockBegin(b + 1, n);
-            std::fill(sumFx + first, sumFx + last, 0.0);
-            std::fill(sumFy + first, sumFy + last, 0.0);
-            std::fill(sumFt + first, sumFt + last, 0.0);
-            group(b, touching, maxOverlap);
-        }
-#pragma omp for schedule(static)
-        for (int m = 0; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
-#pragma omp for schedule(static)
-        for (int m = 1; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
-    }
-    group(nPairGroups - 1, touching, maxOverlap);
-    contactCount_ = touching;
-    maxOverlap_ = maxOverlap;
+    auto zeroBlock = [&](std::size_t first, std::size_t last) {
+        std::fill(sumFx + first, sumFx + last, 0.0);
+        std::fill(sumFy + first, sumFy + last, 0.0);
+        std::fill(sumFt + first, sumFt + last, 0.0);
+    };
+    sumPairGroups(settings_.nThreads, n, zeroBlock, group, contactCount_, maxOverlap_);
 }
 
 void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
