@@ -1,6 +1,7 @@
 // The slab mode's engine: System's step with 3-vectors and the 3D contact kernel.
 
 #include "dem/SlabSystem.hpp"
+#include "dem/Particles.hpp"
 #include "dem/System.hpp"
 
 #include "PairGroups.hpp"
@@ -13,7 +14,6 @@ namespace dem {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 using Index = std::ptrdiff_t;   // OpenMP loop index
 using Vec3 = Eigen::Vector3d;
 
@@ -59,17 +59,10 @@ std::string wallName(std::size_t w)
 void SlabParticles::append(int cls, double diam, double density, const Vec3& pos, const Vec3& vel,
                            const Vec3& w)
 {
-    const double m = density * pi * diam * diam * diam / 6.0;
     x.push_back(pos.x()); y.push_back(pos.y()); z.push_back(pos.z());
     vx.push_back(vel.x()); vy.push_back(vel.y()); vz.push_back(vel.z());
     wx.push_back(w.x()); wy.push_back(w.y()); wz.push_back(w.z());
-    radius.push_back(0.5 * diam);
-    diameter.push_back(diam);
-    mass.push_back(m);
-    invMass.push_back(1.0 / m);
-    invInertia.push_back(10.0 / (m * diam * diam));   // I = m d^2/10, a solid sphere
-    classIndex.push_back(cls);
-    id.push_back(static_cast<std::int64_t>(id.size()));
+    appendSphereConstants(*this, cls, diam, density);
     for (auto* a : {&fx, &fy, &fz, &tx, &ty, &tz, &fluidX, &fluidY, &fluidZ, &dragCoefficient,
                     &gasVx, &gasVy, &gasVz, &extraFx, &extraFy, &extraFz, &meanVx, &meanVy,
                     &meanVz, &meanFluidX, &meanFluidY, &meanFluidZ}) {
