@@ -1,3 +1,6 @@
+// The 2D engine's own part (EngineBase does the rest): adding particles, the drift, the
+// pair forces over the groups, the wall contacts with the second half-kick, the energies.
+
 #include "dem/System.hpp"
 
 #include "PairGroups.hpp"
