@@ -6,6 +6,7 @@
 
 #include "dem/ContactKernel.hpp"
 #include "dem/EngineBase.hpp"
+#include "dem/PlaneWall.hpp"
 
 #include <Eigen/Core>
 #include <array>
@@ -14,15 +15,6 @@
 #include <vector>
 
 namespace dem {
-
-/// Infinite plane wall in any orientation.
-struct PlaneWall3 {
-    Eigen::Vector3d point;   ///< a point on the wall, m
-    Eigen::Vector3d nHat;    ///< unit normal pointing into the domain
-
-    /// Signed distance of p from the wall, positive inside the domain, m.
-    double distance(const Eigen::Vector3d& p) const { return (p - point).dot(nHat); }
-};
 
 /// The walls of a slab: floor, right, ceiling, left (as boxWalls), front z = 0, back z = depth.
 std::vector<PlaneWall3> slabWalls(const Box& box, double depth);
