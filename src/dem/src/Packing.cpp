@@ -147,13 +147,4 @@ void System::packRandom(const std::vector<int>& countPerClass, const Box& region
     recipe_.reset();   // packBed sets it once the bed has settled
 }
 
-double System::packBed(const BedRecipe& recipe)
-{
-    checkPackBed(p_.size(), recipe);
-    packRandom(recipe.countPerClass, recipe.region, recipe.seed);
-    const double spent = settle(recipe.settleTime, recipe.keTolerance);
-    recipe_ = recipe;
-    return spent;
-}
-
 } // namespace dem

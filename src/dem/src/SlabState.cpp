@@ -129,15 +129,6 @@ void SlabSystem::packRandom(const std::vector<int>& countPerClass, const Box& re
     forcesValid_ = false;
 }
 
-double SlabSystem::packBed(const BedRecipe& recipe)
-{
-    checkPackBed(p_.size(), recipe);
-    packRandom(recipe.countPerClass, recipe.region, recipe.seed);
-    const double spent = settle(recipe.settleTime, recipe.keTolerance);
-    recipe_ = recipe;
-    return spent;
-}
-
 void SlabSystem::save(const std::string& path) const
 {
     namespace fs = std::filesystem;

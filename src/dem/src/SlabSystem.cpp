@@ -1,7 +1,10 @@
 // The slab mode's engine: System's step with 3-vectors and the 3D contact kernel.
 
 #include "dem/SlabSystem.hpp"
+#include "dem/Particles.hpp"
 #include "dem/System.hpp"
+
+#include "PairGroups.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +14,6 @@ namespace dem {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 using Index = std::ptrdiff_t;   // OpenMP loop index
 using Vec3 = Eigen::Vector3d;
 
@@ -25,24 +27,7 @@ const Settings& validatedSlab(const Settings& s)
     return s;
 }
 
-double smallestDiameter(const Settings& s)
-{
-    double d = INFINITY;
-    for (const auto& c : s.classes) d = std::min(d, c.diameter);
-    return d;
-}
-
-double largestDiameter(const Settings& s)
-{
-    double d = 0.0;
-    for (const auto& c : s.classes) d = std::max(d, c.diameter);
-    return d;
-}
-
-double resolvedSkin(const Settings& s)
-{
-    return s.neighbourSkin >= 0.0 ? s.neighbourSkin : 0.1 * smallestDiameter(s);
-}
+constexpr double skinFraction = 0.1;   // of d_min, the skin unless Settings::neighbourSkin >= 0
 
 } // namespace
 
@@ -74,17 +59,10 @@ std::string wallName(std::size_t w)
 void SlabParticles::append(int cls, double diam, double density, const Vec3& pos, const Vec3& vel,
                            const Vec3& w)
 {
-    const double m = density * pi * diam * diam * diam / 6.0;
     x.push_back(pos.x()); y.push_back(pos.y()); z.push_back(pos.z());
     vx.push_back(vel.x()); vy.push_back(vel.y()); vz.push_back(vel.z());
     wx.push_back(w.x()); wy.push_back(w.y()); wz.push_back(w.z());
-    radius.push_back(0.5 * diam);
-    diameter.push_back(diam);
-    mass.push_back(m);
-    invMass.push_back(1.0 / m);
-    invInertia.push_back(10.0 / (m * diam * diam));   // I = m d^2/10, a solid sphere
-    classIndex.push_back(cls);
-    id.push_back(static_cast<std::int64_t>(id.size()));
+    appendSphereConstants(*this, cls, diam, density);
     for (auto* a : {&fx, &fy, &fz, &tx, &ty, &tz, &fluidX, &fluidY, &fluidZ, &dragCoefficient,
                     &gasVx, &gasVy, &gasVz, &extraFx, &extraFy, &extraFz, &meanVx, &meanVy,
                     &meanVz, &meanFluidX, &meanFluidY, &meanFluidZ}) {
@@ -94,31 +72,9 @@ void SlabParticles::append(int cls, double diam, double density, const Vec3& pos
 }
 
 SlabSystem::SlabSystem(const Settings& settings)
-    : settings_(validatedSlab(settings)),
-      nClasses_(static_cast<int>(settings.classes.size())),
-      skin_(resolvedSkin(settings)),
-      walls_(slabWalls(settings.box, settings.slabDepth)),
-      search_(settings.box.xMin, settings.box.xMax, settings.box.yMin, settings.box.yMax,
-              largestDiameter(settings) + resolvedSkin(settings))
+    : EngineBase(validatedSlab(settings), slabWalls(settings.box, settings.slabDepth),
+                 skinFraction, false)
 {
-    buildLaws();
-}
-
-void SlabSystem::buildLaws()
-{
-    const ContactSettings& c = settings_.contact;
-    std::vector<double> m(nClasses_);
-    for (int k = 0; k < nClasses_; ++k) {
-        const double d = settings_.classes[k].diameter;
-        m[k] = settings_.classes[k].density * pi * d * d * d / 6.0;
-    }
-    for (int a = 0; a < nClasses_; ++a) {
-        for (int b = 0; b < nClasses_; ++b) {
-            const double mEff = m[a] * m[b] / (m[a] + m[b]);
-            pairLaws_.push_back(makeContactLaw(mEff, c.kn, c.kt, c.restitution, c.frictionParticle));
-        }
-        wallLaws_.push_back(makeContactLaw(m[a], c.kn, c.kt, c.restitutionWall, c.frictionWall));
-    }
 }
 
 void SlabSystem::addWall(const Vec3& point, const Vec3& normal)
@@ -134,10 +90,7 @@ void SlabSystem::addWall(const Vec3& point, const Vec3& normal)
 
 void SlabSystem::addParticle(int cls, const Vec3& pos, const Vec3& vel, const Vec3& spin)
 {
-    if (cls < 0 || cls >= nClasses_) {
-        throw Error("classIndex = " + std::to_string(cls) + " is outside [0, "
-                    + std::to_string(nClasses_ - 1) + "]");
-    }
+    checkClass(cls);
     const double d = settings_.classes[cls].diameter;
     const double r = 0.5 * d;
     for (std::size_t w = 0; w < walls_.size(); ++w) {
@@ -162,105 +115,6 @@ void SlabSystem::addParticle(int cls, const Vec3& pos, const Vec3& vel, const Ve
     listValid_ = false;
     forcesValid_ = false;
     recipe_.reset();   // the particles are no longer the recipe's alone
-}
-
-void SlabSystem::rebuildNeighbourList()
-{
-    const std::size_t n = p_.size();
-    const int ni = static_cast<int>(n);
-
-    // Old non-zero histories by particle i, as System::rebuildNeighbourList.
-    std::vector<int> oldStart(n + 1, 0);
-    for (std::size_t k = 0; k < pairs_.size(); ++k) {
-        if (!pairs_.xi[k].isZero(0.0)) ++oldStart[pairs_.i[k] + 1];
-    }
-    for (std::size_t q = 0; q < n; ++q) oldStart[q + 1] += oldStart[q];
-    std::vector<int> oldPartner(oldStart[n]);
-    std::vector<Vec3> oldXi(oldStart[n]);
-    {
-        std::vector<int> fill(oldStart.begin(), oldStart.end() - 1);
-        for (std::size_t k = 0; k < pairs_.size(); ++k) {
-            if (!pairs_.xi[k].isZero(0.0)) {
-                const int slot = fill[pairs_.i[k]]++;
-                oldPartner[slot] = pairs_.j[k];
-                oldXi[slot] = pairs_.xi[k];
-            }
-        }
-    }
-
-    search_.findPairs(p_.x.data(), p_.y.data(), p_.z.data(), p_.radius.data(), n, skin_, found_,
-                      settings_.nThreads);
-
-    const std::size_t np = found_.size();
-    std::vector<int> slot(nPairGroups + 1, 0);
-    for (const IndexPair& q : found_) ++slot[pairGroup(q.i, q.j, n) + 1];
-    for (int g = 0; g < nPairGroups; ++g) slot[g + 1] += slot[g];
-    pairs_.groupStart = slot;
-    pairs_.i.resize(np);
-    pairs_.j.resize(np);
-    pairs_.law.resize(np);
-    pairs_.xi.resize(np);
-    for (const IndexPair& q : found_) {
-        const int k = slot[pairGroup(q.i, q.j, n)]++;
-        pairs_.i[k] = q.i;
-        pairs_.j[k] = q.j;
-        pairs_.law[k] = p_.classIndex[q.i] * nClasses_ + p_.classIndex[q.j];
-        Vec3 xi = Vec3::Zero();
-        for (int s = oldStart[q.i]; s < oldStart[q.i + 1]; ++s) {
-            if (oldPartner[s] == q.j) {
-                xi = oldXi[s];
-                break;
-            }
-        }
-        pairs_.xi[k] = xi;
-    }
-
-    const int nWalls = static_cast<int>(walls_.size());
-    auto isCandidate = [&](int i, int w) {
-        return walls_[w].distance(p_.position(i)) < p_.radius[i] + skin_;
-    };
-    SlabWallList next;
-    next.start.assign(n + 1, 0);
-    for (int i = 0; i < ni; ++i) {
-        int count = 0;
-        for (int w = 0; w < nWalls; ++w) count += isCandidate(i, w);
-        next.start[i + 1] = next.start[i] + count;
-    }
-    next.wall.resize(next.start[n]);
-    next.xi.resize(next.start[n]);
-    const bool haveOld = wallContacts_.start.size() == n + 1;
-    for (int i = 0; i < ni; ++i) {
-        int s = next.start[i];
-        for (int w = 0; w < nWalls; ++w) {
-            if (!isCandidate(i, w)) continue;
-            Vec3 xi = Vec3::Zero();
-            if (haveOld) {
-                for (int o = wallContacts_.start[i]; o < wallContacts_.start[i + 1]; ++o) {
-                    if (wallContacts_.wall[o] == w) xi = wallContacts_.xi[o];
-                }
-            }
-            next.wall[s] = w;
-            next.xi[s] = xi;
-            ++s;
-        }
-    }
-    wallContacts_ = std::move(next);
-
-    p_.xRef = p_.x;
-    p_.yRef = p_.y;
-    p_.zRef = p_.z;
-    listValid_ = true;
-    ++listBuilds_;
-}
-
-void SlabSystem::ensureReady()
-{
-    if (!listValid_) rebuildNeighbourList();
-    if (!forcesValid_) {
-        computePairForces(0.0);
-        addWallForcesAndKick(0.0, false, false);
-        forcesValid_ = true;
-    }
 }
 
 void SlabSystem::computePairForces(double historyDt)
@@ -304,30 +158,12 @@ void SlabSystem::computePairForces(double historyDt)
     auto group = [&](int gr, std::size_t& touching, double& maxOverlap) {
         for (Index k = groupStart[gr]; k < groupStart[gr + 1]; ++k) pairForce(k, touching, maxOverlap);
     };
-    // The groups of ContactList.hpp: a particle gets its forces in the same order whatever
-    // the thread count.
-    std::size_t touching = 0;
-    double maxOverlap = 0.0;
-#pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
-    reduction(max : maxOverlap)
-    {
-#pragma omp for schedule(static)
-        for (int b = 0; b < nPairBlocks; ++b) {
-            const std::size_t first = pairBlockBegin(b, n);
-            const std::size_t last = pairBlockBegin(b + 1, n);
-            for (auto* a : {&p.fx, &p.fy, &p.fz, &p.tx, &p.ty, &p.tz}) {
-                std::fill(a->begin() + first, a->begin() + last, 0.0);
-            }
-            group(b, touching, maxOverlap);
+    auto zeroBlock = [&](std::size_t first, std::size_t last) {
+        for (auto* a : {&p.fx, &p.fy, &p.fz, &p.tx, &p.ty, &p.tz}) {
+            std::fill(a->begin() + first, a->begin() + last, 0.0);
         }
-#pragma omp for schedule(static)
-        for (int m = 0; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
-#pragma omp for schedule(static)
-        for (int m = 1; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
-    }
-    group(nPairGroups - 1, touching, maxOverlap);
-    contactCount_ = touching;
-    maxOverlap_ = maxOverlap;
+    };
+    sumPairGroups(settings_.nThreads, n, zeroBlock, group, contactCount_, maxOverlap_);
 }
 
 void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
@@ -406,9 +242,8 @@ bool SlabSystem::inside(std::size_t i) const
            && p_.z[i] >= 0.0 && p_.z[i] <= settings_.slabDepth;
 }
 
-void SlabSystem::step(bool fluid)
+double SlabSystem::drift()
 {
-    ensureReady();
     const Index n = static_cast<Index>(p_.size());
     const double dt = settings_.dt;
     const double h = 0.5 * dt;
@@ -434,72 +269,7 @@ void SlabSystem::step(bool fluid)
         lost |= !inside(i);
     }
     if (lost) throwLostParticle();
-
-    // Rebuild once some particle may have closed half the skin: no contact can be missed.
-    if (4.0 * maxDisplacement2 >= skin_ * skin_) rebuildNeighbourList();
-
-    computePairForces(dt);
-    addWallForcesAndKick(dt, true, fluid);
-    ++stepCount_;
-}
-
-void SlabSystem::setFluidForceAtCurrentVelocity(bool fluid)
-{
-    SlabParticles& p = p_;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const double K = fluid ? p.dragCoefficient[i] : 0.0;
-        p.fluidX[i] = fluid ? K * (p.gasVx[i] - p.vx[i]) + p.extraFx[i] : 0.0;
-        p.fluidY[i] = fluid ? K * (p.gasVy[i] - p.vy[i]) + p.extraFy[i] : 0.0;
-        p.fluidZ[i] = fluid ? K * (p.gasVz[i] - p.vz[i]) + p.extraFz[i] : 0.0;
-    }
-}
-
-void SlabSystem::advance(double dtOuter)
-{
-    const long nSub = subStepCount(dtOuter, settings_.dt);
-    ensureReady();
-    setFluidForceAtCurrentVelocity(true);
-    SlabParticles& p = p_;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        p.meanVx[i] = 0.5 * p.vx[i];
-        p.meanVy[i] = 0.5 * p.vy[i];
-        p.meanVz[i] = 0.5 * p.vz[i];
-    }
-    for (long s = 1; s <= nSub; ++s) {
-        meanWeight_ = s == nSub ? 0.5 : 1.0;
-        step(true);
-    }
-    const double invN = 1.0 / static_cast<double>(nSub);
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        p.meanVx[i] *= invN;
-        p.meanVy[i] *= invN;
-        p.meanVz[i] *= invN;
-        const double K = p.dragCoefficient[i];
-        p.meanFluidX[i] = K * (p.gasVx[i] - p.meanVx[i]) + p.extraFx[i];
-        p.meanFluidY[i] = K * (p.gasVy[i] - p.meanVy[i]) + p.extraFy[i];
-        p.meanFluidZ[i] = K * (p.gasVz[i] - p.meanVz[i]) + p.extraFz[i];
-    }
-}
-
-double SlabSystem::settle(double maxTime, double keTolerance)
-{
-    const std::int64_t first = stepCount_;
-    if (p_.size() == 0) return 0.0;
-    ensureReady();
-    setFluidForceAtCurrentVelocity(false);
-    const double n = static_cast<double>(p_.size());
-    const auto nSteps = static_cast<std::int64_t>(std::ceil(maxTime / settings_.dt - 1e-9));
-    constexpr int checkEvery = 100;   // as System::settle
-    double previous = INFINITY;
-    for (std::int64_t k = 0; k < nSteps; ++k) {
-        if (k % checkEvery == 0) {
-            const double ke = kineticEnergy() / n;
-            if (k > 0 && ke < keTolerance && ke < previous) break;
-            previous = ke;
-        }
-        step(false);
-    }
-    return static_cast<double>(stepCount_ - first) * settings_.dt;
+    return maxDisplacement2;
 }
 
 double SlabSystem::kineticEnergy() const
@@ -573,11 +343,8 @@ void SlabSystem::throwLostParticle() const
 
 std::size_t SlabSystem::memoryBytes() const
 {
-    std::size_t bytes = search_.memoryBytes() + found_.capacity() * sizeof(IndexPair);
-    auto add = [&](const auto& a) { bytes += a.capacity() * sizeof(a[0]); };
-    p_.forEachArray(add);
-    add(pairs_.i); add(pairs_.j); add(pairs_.law); add(pairs_.xi); add(pairs_.groupStart);
-    add(wallContacts_.start); add(wallContacts_.wall); add(wallContacts_.xi);
+    std::size_t bytes = listMemoryBytes();
+    p_.forEachArray([&](const auto& a) { bytes += a.capacity() * sizeof(a[0]); });
     return bytes;
 }
 

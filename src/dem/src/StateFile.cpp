@@ -138,9 +138,9 @@ void StateFile::write(const System& s, Writer& w)
     w.value(s.maxOverlap_);
     s.p_.forEachArray([&](const auto& a) { w.array(a); });
     const PairList& pl = s.pairs_;
-    w.array(pl.i); w.array(pl.j); w.array(pl.law); w.array(pl.xiT);
+    w.array(pl.i); w.array(pl.j); w.array(pl.law); w.array(pl.xi);
     w.array(pl.groupStart);
-    w.array(s.wallContacts_.start); w.array(s.wallContacts_.wall); w.array(s.wallContacts_.xiT);
+    w.array(s.wallContacts_.start); w.array(s.wallContacts_.wall); w.array(s.wallContacts_.xi);
     w.bytes(magic, sizeof(magic));   // end marker
 }
 
@@ -228,7 +228,7 @@ void StateFile::load(System& s, const std::string& path)
     t.maxOverlap_ = r.value<double>();
     t.p_.forEachArray([&](auto& a) { r.array(a); });
     PairList& pl = t.pairs_;
-    r.array(pl.i); r.array(pl.j); r.array(pl.law); r.array(pl.xiT);
+    r.array(pl.i); r.array(pl.j); r.array(pl.law); r.array(pl.xi);
     if (fileVersion == version2) {
         // Pairs in the search's order, not in blocks: a fresh list is built on the first
         // step (the history carries over; the sums' order changes at round-off).
@@ -249,7 +249,7 @@ void StateFile::load(System& s, const std::string& path)
             t.listValid_ = false;
         }
     }
-    r.array(t.wallContacts_.start); r.array(t.wallContacts_.wall); r.array(t.wallContacts_.xiT);
+    r.array(t.wallContacts_.start); r.array(t.wallContacts_.wall); r.array(t.wallContacts_.xi);
     char tail[sizeof(magic)];
     in.read(tail, sizeof(tail));
     if (!in || std::memcmp(tail, magic, sizeof(magic)) != 0) r.fail("no end marker");
@@ -259,8 +259,8 @@ void StateFile::load(System& s, const std::string& path)
     bool ok = true;
     t.p_.forEachArray([&](const auto& a) { ok = ok && a.size() == n; });
     const std::size_t np = pl.i.size();
-    ok = ok && pl.j.size() == np && pl.law.size() == np && pl.xiT.size() == np
-         && t.wallContacts_.wall.size() == t.wallContacts_.xiT.size();
+    ok = ok && pl.j.size() == np && pl.law.size() == np && pl.xi.size() == np
+         && t.wallContacts_.wall.size() == t.wallContacts_.xi.size();
     for (std::size_t k = 0; ok && k < np; ++k) {
         ok = pl.i[k] >= 0 && pl.j[k] >= 0 && static_cast<std::size_t>(pl.i[k]) < n
              && static_cast<std::size_t>(pl.j[k]) < n && pl.law[k] >= 0

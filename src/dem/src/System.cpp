@@ -1,4 +1,9 @@
+// The 2D engine's own part (EngineBase does the rest): adding particles, the drift, the
+// pair forces over the groups, the wall contacts with the second half-kick, the energies.
+
 #include "dem/System.hpp"
+
+#include "PairGroups.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,25 +14,6 @@
 namespace dem {
 
 namespace {
-
-double smallestDiameter(const Settings& s)
-{
-    double d = INFINITY;
-    for (const auto& c : s.classes) d = std::min(d, c.diameter);
-    return d;
-}
-
-double largestDiameter(const Settings& s)
-{
-    double d = 0.0;
-    for (const auto& c : s.classes) d = std::max(d, c.diameter);
-    return d;
-}
-
-double resolvedSkin(const Settings& s, double startFraction)
-{
-    return s.neighbourSkin >= 0.0 ? s.neighbourSkin : startFraction * smallestDiameter(s);
-}
 
 const Settings& validated(const Settings& s)
 {
@@ -45,48 +31,15 @@ using Index = std::ptrdiff_t;   // OpenMP loop index
 } // namespace
 
 System::System(const Settings& settings)
-    : settings_(validated(settings)),
-      nClasses_(static_cast<int>(settings.classes.size())),
-      timeStepBound_(dem::timeStepBound(settings)),
-      skin_(resolvedSkin(settings, skinStartFraction)),
-      adaptiveSkin_(settings.neighbourSkin < 0.0),
-      skinMin_(adaptiveSkin_ ? skinMinFraction * smallestDiameter(settings) : skin_),
-      skinMax_(adaptiveSkin_ ? skinMaxFraction * smallestDiameter(settings) : skin_),
-      smallestDiameter_(smallestDiameter(settings)),
-      largestDiameter_(largestDiameter(settings)),
-      walls_(boxWalls(settings.box)),
-      search_(settings.box.xMin, settings.box.xMax, settings.box.yMin, settings.box.yMax,
-              largestDiameter(settings) + resolvedSkin(settings, skinStartFraction))
+    : EngineBase(validated(settings), boxWalls(settings.box), skinStartFraction,
+                 settings.neighbourSkin < 0.0),
+      timeStepBound_(dem::timeStepBound(settings))
 {
-    buildLaws();
-}
-
-void System::buildLaws()
-{
-    constexpr double pi = 3.14159265358979323846;
-    const ContactSettings& c = settings_.contact;
-    std::vector<double> m(nClasses_);
-    for (int k = 0; k < nClasses_; ++k) {
-        const double d = settings_.classes[k].diameter;
-        m[k] = settings_.classes[k].density * pi * d * d * d / 6.0;
-    }
-    pairLaws_.clear();
-    wallLaws_.clear();
-    for (int a = 0; a < nClasses_; ++a) {
-        for (int b = 0; b < nClasses_; ++b) {
-            const double mEff = m[a] * m[b] / (m[a] + m[b]);
-            pairLaws_.push_back(makeContactLaw(mEff, c.kn, c.kt, c.restitution, c.frictionParticle));
-        }
-        wallLaws_.push_back(makeContactLaw(m[a], c.kn, c.kt, c.restitutionWall, c.frictionWall));
-    }
 }
 
 void System::addParticle(int cls, double x, double y, double vx, double vy, double omega)
 {
-    if (cls < 0 || cls >= nClasses_) {
-        throw Error("classIndex = " + std::to_string(cls) + " is outside [0, "
-                    + std::to_string(nClasses_ - 1) + "]");
-    }
+    checkClass(cls);
     const double d = settings_.classes[cls].diameter;
     const double r = 0.5 * d;
     const double tolerance = 0.01 * d;
@@ -119,24 +72,13 @@ void System::addParticle(int cls, double x, double y, double vx, double vy, doub
     recipe_.reset();   // the particles are no longer the recipe's alone
 }
 
-void System::ensureReady()
-{
-    if (!listValid_) rebuildNeighbourList();
-    if (!forcesValid_) {
-        // First evaluation at the initial state: no history accumulation (dt = 0).
-        computePairForces(0.0);
-        addWallForcesAndKick(0.0, false, false);
-        forcesValid_ = true;
-    }
-}
-
 void System::computePairForces(double historyDt)
 {
     const int* pi = pairs_.i.data();
     const int* pj = pairs_.j.data();
     const int* law = pairs_.law.data();
     const int* groupStart = pairs_.groupStart.data();
-    double* xiT = pairs_.xiT.data();
+    double* xiT = pairs_.xi.data();
     const double* x = p_.x.data();
     const double* y = p_.y.data();
     const double* vx = p_.vx.data();
@@ -181,11 +123,9 @@ void System::computePairForces(double historyDt)
         maxOverlap = std::max(maxOverlap, g.overlap);
     };
 
-    // Groups that share no particle run in parallel: the blocks, then the boundaries
-    // between even and odd blocks, then between odd and even ones; the rest on one thread.
-    // A particle gets its forces in the same order whatever the thread count.
-    // Two passes per group: the touching pairs picked out without a branch (most candidates
-    // do not touch, and a branch per pair mispredicts), then their forces in list order.
+    // The groups as sumPairGroups runs them. Two passes per group: the touching pairs
+    // picked out without a branch (most candidates do not touch, and a branch per pair
+    // mispredicts), then their forces in list order.
     touchingScratch_.resize(pairs_.size());   // (a loaded state's list has no build here)
     int* touchingPairs = touchingScratch_.data();
     auto group = [&](int g, std::size_t& touching, double& maxOverlap) {
@@ -205,30 +145,12 @@ void System::computePairForces(double historyDt)
         }
         for (int q = 0; q < m; ++q) pairForce(picked[q], touching, maxOverlap);
     };
-    std::size_t touching = 0;
-    double maxOverlap = 0.0;
-#pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
-    reduction(max : maxOverlap)
-    {
-#pragma omp for schedule(static)
-        for (int b = 0; b < nPairBlocks; ++b) {
-            // Zeroed by the thread that sums them (and that kicks these particles next),
-            // so the sums stay in its core's cache
-            const std::size_t first = pairBlockBegin(b, n);
-            const std::size_t last = pairBlockBegin(b + 1, n);
-            std::fill(sumFx + first, sumFx + last, 0.0);
-            std::fill(sumFy + first, sumFy + last, 0.0);
-            std::fill(sumFt + first, sumFt + last, 0.0);
-            group(b, touching, maxOverlap);
-        }
-#pragma omp for schedule(static)
-        for (int m = 0; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
-#pragma omp for schedule(static)
-        for (int m = 1; m < nPairBlocks - 1; m += 2) group(nPairBlocks + m, touching, maxOverlap);
-    }
-    group(nPairGroups - 1, touching, maxOverlap);
-    contactCount_ = touching;
-    maxOverlap_ = maxOverlap;
+    auto zeroBlock = [&](std::size_t first, std::size_t last) {
+        std::fill(sumFx + first, sumFx + last, 0.0);
+        std::fill(sumFy + first, sumFy + last, 0.0);
+        std::fill(sumFt + first, sumFt + last, 0.0);
+    };
+    sumPairGroups(settings_.nThreads, n, zeroBlock, group, contactCount_, maxOverlap_);
 }
 
 void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
@@ -240,7 +162,7 @@ void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
     const double weight = meanWeight_;
     const int* wStart = wallContacts_.start.data();
     const int* wWall = wallContacts_.wall.data();
-    double* wXi = wallContacts_.xiT.data();
+    double* wXi = wallContacts_.xi.data();
     const PlaneWall* walls = walls_.data();
     const ContactLaw* wallLaws = wallLaws_.data();
     Particles& p = p_;
@@ -367,9 +289,8 @@ void System::kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, doubl
     }
 }
 
-void System::step(bool fluid)
+double System::drift()
 {
-    ensureReady();
     const Index n = static_cast<Index>(p_.size());
     const double dt = settings_.dt;
     const double h = 0.5 * dt;
@@ -396,78 +317,7 @@ void System::step(bool fluid)
         lost |= !(p.x[i] >= b.xMin && p.x[i] <= b.xMax && p.y[i] >= b.yMin && p.y[i] <= b.yMax);
     }
     if (lost) throwLostParticle();
-
-    // Rebuild once some particle may have closed half the skin: no contact can be missed.
-    // An adaptive skin above its minimum is also rebuilt (narrower) when it lasts long.
-    const bool due = 4.0 * maxDisplacement2 >= skin_ * skin_;
-    const bool tooWide = adaptiveSkin_ && skin_ > skinMin_ && lastBuildStep_ >= 0
-                         && stepCount_ - lastBuildStep_ >= skinRecheckAfter;
-    if (due || tooWide) {
-        if (adaptiveSkin_) adaptSkin(maxDisplacement2);
-        rebuildNeighbourList();
-    }
-
-    computePairForces(dt);
-    addWallForcesAndKick(dt, true, fluid);
-    ++stepCount_;
-}
-
-void System::setFluidForceAtCurrentVelocity(bool fluid)
-{
-    Particles& p = p_;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        p.fluidX[i] = fluid ? p.dragCoefficient[i] * (p.gasVx[i] - p.vx[i]) + p.extraFx[i] : 0.0;
-        p.fluidY[i] = fluid ? p.dragCoefficient[i] * (p.gasVy[i] - p.vy[i]) + p.extraFy[i] : 0.0;
-    }
-}
-
-void System::advance(double dtOuter)
-{
-    const long nSub = subStepCount(dtOuter, settings_.dt);
-    ensureReady();
-    setFluidForceAtCurrentVelocity(true);
-
-    // Trapezoidal weights: the drag is evaluated at v(t0), v(t1), ..., v(tn), and the
-    // half-kicks apply the end values for half a sub-step and the inner ones for a whole one.
-    Particles& p = p_;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        p.meanVx[i] = 0.5 * p.vx[i];
-        p.meanVy[i] = 0.5 * p.vy[i];
-    }
-    for (long s = 1; s <= nSub; ++s) {
-        meanWeight_ = s == nSub ? 0.5 : 1.0;
-        step(true);
-    }
-    const double invN = 1.0 / static_cast<double>(nSub);
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        p.meanVx[i] *= invN;
-        p.meanVy[i] *= invN;
-        p.meanFluidX[i] = p.dragCoefficient[i] * (p.gasVx[i] - p.meanVx[i]) + p.extraFx[i];
-        p.meanFluidY[i] = p.dragCoefficient[i] * (p.gasVy[i] - p.meanVy[i]) + p.extraFy[i];
-    }
-}
-
-double System::settle(double maxTime, double keTolerance)
-{
-    const std::int64_t first = stepCount_;
-    if (p_.size() == 0) return 0.0;
-    ensureReady();
-    setFluidForceAtCurrentVelocity(false);
-    const double n = static_cast<double>(p_.size());
-    const auto nSteps = static_cast<std::int64_t>(std::ceil(maxTime / settings_.dt - 1e-9));
-    // At rest means below the tolerance and not gaining energy: a packing released from
-    // rest starts below any tolerance and is then accelerating.
-    constexpr int checkEvery = 100;   // 1 ms at dt = 1e-5 s: cheap next to the steps
-    double previous = INFINITY;
-    for (std::int64_t k = 0; k < nSteps; ++k) {
-        if (k % checkEvery == 0) {
-            const double ke = kineticEnergy() / n;
-            if (k > 0 && ke < keTolerance && ke < previous) break;
-            previous = ke;
-        }
-        step(false);
-    }
-    return static_cast<double>(stepCount_ - first) * settings_.dt;
+    return maxDisplacement2;
 }
 
 double System::kineticEnergy() const
@@ -491,7 +341,7 @@ double System::elasticEnergy() const
         const double overlap = p_.radius[i] + p_.radius[j] - std::sqrt(dx * dx + dy * dy);
         if (overlap > 0.0) {
             const ContactLaw& law = pairLaws_[pairs_.law[k]];
-            energy += 0.5 * law.kn * overlap * overlap + 0.5 * law.kt * pairs_.xiT[k] * pairs_.xiT[k];
+            energy += 0.5 * law.kn * overlap * overlap + 0.5 * law.kt * pairs_.xi[k] * pairs_.xi[k];
         }
     }
     for (std::size_t i = 0; i + 1 < wallContacts_.start.size(); ++i) {
@@ -501,7 +351,7 @@ double System::elasticEnergy() const
             if (overlap > 0.0) {
                 const ContactLaw& law = wallLaws_[p_.classIndex[i]];
                 energy += 0.5 * law.kn * overlap * overlap
-                          + 0.5 * law.kt * wallContacts_.xiT[s] * wallContacts_.xiT[s];
+                          + 0.5 * law.kt * wallContacts_.xi[s] * wallContacts_.xi[s];
             }
         }
     }
@@ -510,13 +360,8 @@ double System::elasticEnergy() const
 
 std::size_t System::memoryBytes() const
 {
-    std::size_t bytes = p_.memoryBytes() + search_.memoryBytes()
-                        + found_.capacity() * sizeof(IndexPair);
-    auto add = [&](const auto& a) { bytes += a.capacity() * sizeof(a[0]); };
-    add(pairs_.i); add(pairs_.j); add(pairs_.law); add(pairs_.xiT); add(pairs_.groupStart);
-    add(touchingScratch_);
-    add(wallContacts_.start); add(wallContacts_.wall); add(wallContacts_.xiT);
-    return bytes;
+    return p_.memoryBytes() + listMemoryBytes()
+           + touchingScratch_.capacity() * sizeof(touchingScratch_[0]);
 }
 
 void System::throwLostParticle() const

@@ -43,27 +43,31 @@ inline int pairGroup(int i, int j, std::size_t n)
 }
 
 /// Particle-particle candidates (i < j) as arrays; a candidate keeps its tangential
-/// history while it touches and has it reset to zero when it separates.
+/// history while it touches and has it reset to zero when it separates. History: a scalar
+/// along tHat in 2D, a 3-vector in the slab.
 ///
 /// Order: group g's pairs are groupStart[g] .. groupStart[g+1], each group in the search's
 /// order. With particles numbered by cell (sortByCell, or the packing's bands) nearly all
 /// pairs lie within a block or across neighbouring blocks.
-struct PairList {
+template <class History> struct PairListT {
     std::vector<int> i, j;
     std::vector<int> law;          ///< index into the pair-law table
-    std::vector<double> xiT;       ///< tangential spring displacement, m (history)
+    std::vector<History> xi;       ///< tangential spring displacement, m (history)
     std::vector<int> groupStart;   ///< nPairGroups + 1 entries
 
     std::size_t size() const { return i.size(); }
 };
 
 /// Particle-wall candidates grouped by particle: particle p's are start[p] .. start[p+1].
-struct WallList {
+template <class History> struct WallListT {
     std::vector<int> start;
     std::vector<int> wall;
-    std::vector<double> xiT;       ///< tangential spring displacement, m (history)
+    std::vector<History> xi;       ///< tangential spring displacement, m (history)
 
     std::size_t size() const { return wall.size(); }
 };
+
+using PairList = PairListT<double>;
+using WallList = WallListT<double>;
 
 } // namespace dem

@@ -7,6 +7,21 @@
 
 namespace dem {
 
+/// Appends a sphere's constants of class cls to the arrays of `p` (Particles or
+/// SlabParticles): radius, diameter, mass, inverse mass and inertia, class and id.
+template <class P> void appendSphereConstants(P& p, int cls, double diam, double density)
+{
+    constexpr double pi = 3.14159265358979323846;
+    const double m = density * pi * diam * diam * diam / 6.0;
+    p.radius.push_back(0.5 * diam);
+    p.diameter.push_back(diam);
+    p.mass.push_back(m);
+    p.invMass.push_back(1.0 / m);
+    p.invInertia.push_back(10.0 / (m * diam * diam));   // I = m d^2/10, a solid sphere
+    p.classIndex.push_back(cls);
+    p.id.push_back(static_cast<std::int64_t>(p.id.size()));
+}
+
 /// Per-particle arrays, all of length size(), in one numbering (System::sortByCell changes
 /// it; `id` stays with the particle).
 struct Particles {

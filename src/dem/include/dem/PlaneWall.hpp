@@ -8,14 +8,19 @@
 
 namespace dem {
 
-/// Infinite plane wall at any angle in the x-y plane.
-struct PlaneWall {
-    Eigen::Vector2d point;   ///< a point on the wall, m
-    Eigen::Vector2d nHat;    ///< unit normal pointing into the domain
+/// Infinite plane wall: a line in the x-y plane (Dim = 2) or a plane in any orientation
+/// (Dim = 3, the slab mode).
+template <int Dim> struct PlaneWallT {
+    using Vector = Eigen::Matrix<double, Dim, 1>;
+    Vector point;   ///< a point on the wall, m
+    Vector nHat;    ///< unit normal pointing into the domain
 
     /// Signed distance of p from the wall, positive inside the domain, m.
-    double distance(const Eigen::Vector2d& p) const { return (p - point).dot(nHat); }
+    double distance(const Vector& p) const { return (p - point).dot(nHat); }
 };
+
+using PlaneWall = PlaneWallT<2>;
+using PlaneWall3 = PlaneWallT<3>;
 
 /// The four walls of a box: floor, right, ceiling, left.
 std::vector<PlaneWall> boxWalls(const Box& box);

@@ -1,30 +1,20 @@
 #pragma once
 // The DEM engine of the slab mode (Settings::dimension = 3): spheres between a front wall
 // z = 0 and a back wall z = slabDepth and the box's walls around, with the contact kernel,
-// the NBS search and the thread-independent pair blocks of the 2D engine.
+// on EngineBase as the 2D engine (step, sub-steps, neighbour list), with the sphere's drift,
+// pair and wall forces and kick, the packing and the state file.
 
 #include "dem/ContactKernel.hpp"
-#include "dem/ContactLaw.hpp"
-#include "dem/ContactList.hpp"
-#include "dem/Facade.hpp"
-#include "dem/NbsSearch.hpp"
+#include "dem/EngineBase.hpp"
+#include "dem/PlaneWall.hpp"
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
 namespace dem {
-
-/// Infinite plane wall in any orientation.
-struct PlaneWall3 {
-    Eigen::Vector3d point;   ///< a point on the wall, m
-    Eigen::Vector3d nHat;    ///< unit normal pointing into the domain
-
-    /// Signed distance of p from the wall, positive inside the domain, m.
-    double distance(const Eigen::Vector3d& p) const { return (p - point).dot(nHat); }
-};
 
 /// The walls of a slab: floor, right, ceiling, left (as boxWalls), front z = 0, back z = depth.
 std::vector<PlaneWall3> slabWalls(const Box& box, double depth);
@@ -72,32 +62,39 @@ struct SlabParticles {
 };
 
 /// Pair candidates with their 3-vector tangential history; order and groups as PairList.
-struct SlabPairList {
-    std::vector<int> i, j;
-    std::vector<int> law;
-    std::vector<Eigen::Vector3d> xi;   ///< tangential spring displacement, m
-    std::vector<int> groupStart;
-    std::size_t size() const { return i.size(); }
-};
-
+using SlabPairList = PairListT<Eigen::Vector3d>;
 /// Particle-wall candidates grouped by particle, as WallList.
-struct SlabWallList {
-    std::vector<int> start;
-    std::vector<int> wall;
-    std::vector<Eigen::Vector3d> xi;
-    std::size_t size() const { return wall.size(); }
+using SlabWallList = WallListT<Eigen::Vector3d>;
+
+/// What EngineBase needs of the slab: spin, torque and the tangential history are 3-vectors.
+struct SphereTraits {
+    using Particles = SlabParticles;
+    using Wall = PlaneWall3;
+    using History = Eigen::Vector3d;
+
+    static Eigen::Vector3d position(const Particles& p, std::size_t i) { return p.position(i); }
+    static void findPairs(NbsSearch& search, const Particles& p, double skin,
+                          std::vector<IndexPair>& found, int nThreads)
+    {
+        search.findPairs(p.x.data(), p.y.data(), p.z.data(), p.radius.data(), p.size(), skin,
+                         found, nThreads);
+    }
+    static bool isZero(const Eigen::Vector3d& xi) { return xi.isZero(0.0); }
+    static Eigen::Vector3d zeroHistory() { return Eigen::Vector3d::Zero(); }
+    static std::array<AxisArrays, 3> axes(Particles& p)
+    {
+        return {{{&p.x, &p.xRef, &p.vx, &p.gasVx, &p.extraFx, &p.fluidX, &p.meanVx, &p.meanFluidX},
+                 {&p.y, &p.yRef, &p.vy, &p.gasVy, &p.extraFy, &p.fluidY, &p.meanVy, &p.meanFluidY},
+                 {&p.z, &p.zRef, &p.vz, &p.gasVz, &p.extraFz, &p.fluidZ, &p.meanVz, &p.meanFluidZ}}};
+    }
 };
 
-/// Soft-sphere DEM of spheres in a slab; the step is System's (velocity Verlet, dashpots fed
-/// by the half-step velocity, the drag implicit), with 3-vectors.
-class SlabSystem {
+/// Soft-sphere DEM of spheres in a slab; the step is EngineBase's (velocity Verlet, dashpots
+/// fed by the half-step velocity, the drag implicit), with 3-vectors. Its skin is fixed
+/// (Settings::neighbourSkin, or 0.1 d_min if that is negative).
+class SlabSystem : public EngineBase<SlabSystem, SphereTraits> {
 public:
     explicit SlabSystem(const Settings& settings);
-
-    const Settings& settings() const { return settings_; }
-    SlabParticles& particles() { return p_; }
-    const SlabParticles& particles() const { return p_; }
-    const std::vector<PlaneWall3>& walls() const { return walls_; }
 
     /// Adds a wall through `point` with normal `normal` (normalised here) pointing into the
     /// domain; walls added later come after the slab's six.
@@ -107,22 +104,9 @@ public:
                      const Eigen::Vector3d& spin = Eigen::Vector3d::Zero());
     /// Random sequential addition in region x [0, slabDepth], largest class first.
     void packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed);
-    /// packRandom then settle into an empty slab, as `recipe` says; the recipe is kept and
-    /// saved with the state. Returns the settling time spent, s.
-    double packBed(const BedRecipe& recipe);
 
-    void step(bool fluid);
-    void advance(double dtOuter);
-    double settle(double maxTime, double keTolerance);
-
-    double time() const { return static_cast<double>(stepCount_) * settings_.dt; }
-    std::int64_t stepCount() const { return stepCount_; }
     double kineticEnergy() const;
     double elasticEnergy() const;
-    std::size_t contactCount() const { return contactCount_; }
-    double maxOverlap() const { return maxOverlap_; }
-    std::int64_t neighbourListBuilds() const { return listBuilds_; }
-    double neighbourSkin() const { return skin_; }
     /// Heap memory held by particle, contact and search arrays, bytes.
     std::size_t memoryBytes() const;
     /// Force the particles exert on wall w at the current state (dashpots at the current
@@ -130,7 +114,6 @@ public:
     Eigen::Vector3d wallForce(int w) const;
     /// The search's candidate pairs of the last build (for tests).
     const SlabPairList& pairList() const { return pairs_; }
-    void rebuildNeighbourList();
 
     /// Whole state, contact history included, in a file of its own kind (not the 2D one).
     void save(const std::string& path) const;
@@ -140,38 +123,15 @@ public:
     /// counts per class if it has none: then returns false); throws naming every entry that
     /// differs, leaving this slab untouched.
     bool loadBed(const std::string& path, const BedRecipe& recipe);
-    /// How the particles were made (packBed, or the file they came from); none otherwise.
-    const BedRecipe* recipe() const { return recipe_ ? &*recipe_ : nullptr; }
 
 private:
-    void buildLaws();
-    void ensureReady();
+    friend class EngineBase<SlabSystem, SphereTraits>;
+
+    double drift();
     void computePairForces(double historyDt);
     void addWallForcesAndKick(double historyDt, bool kick, bool fluid);
-    void setFluidForceAtCurrentVelocity(bool fluid);
     bool inside(std::size_t i) const;
     [[noreturn]] void throwLostParticle() const;
-
-    Settings settings_;
-    int nClasses_;
-    double skin_;
-    std::vector<PlaneWall3> walls_;
-    std::vector<ContactLaw> pairLaws_;
-    std::vector<ContactLaw> wallLaws_;
-    SlabParticles p_;
-    SlabPairList pairs_;
-    SlabWallList wallContacts_;
-    NbsSearch search_;
-    std::vector<IndexPair> found_;
-
-    std::int64_t stepCount_ = 0;
-    std::int64_t listBuilds_ = 0;
-    bool listValid_ = false;
-    bool forcesValid_ = false;
-    std::size_t contactCount_ = 0;
-    double maxOverlap_ = 0.0;
-    double meanWeight_ = 1.0;
-    std::optional<BedRecipe> recipe_;
 };
 
 } // namespace dem

@@ -1,0 +1,372 @@
+// The shared part of the 2D and slab engines (EngineBase.hpp): laws, step structure, the
+// CFD step's sub-steps, settling, and the neighbour list with its skin.
+
+#include "dem/EngineBase.hpp"
+#include "dem/SlabSystem.hpp"
+#include "dem/StateRecord.hpp"
+#include "dem/System.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include <omp.h>
+
+namespace dem {
+
+namespace {
+
+using Index = std::ptrdiff_t;   // OpenMP loop index
+
+double smallestDiameter(const Settings& s)
+{
+    double d = INFINITY;
+    for (const auto& c : s.classes) d = std::min(d, c.diameter);
+    return d;
+}
+
+double largestDiameter(const Settings& s)
+{
+    double d = 0.0;
+    for (const auto& c : s.classes) d = std::max(d, c.diameter);
+    return d;
+}
+
+double resolvedSkin(const Settings& s, double startFraction)
+{
+    return s.neighbourSkin >= 0.0 ? s.neighbourSkin : startFraction * smallestDiameter(s);
+}
+
+} // namespace
+
+template <class Derived, class Traits>
+EngineBase<Derived, Traits>::EngineBase(const Settings& settings, std::vector<Wall> walls,
+                                        double startFraction, bool adaptive)
+    : settings_(settings),
+      nClasses_(static_cast<int>(settings.classes.size())),
+      smallestDiameter_(smallestDiameter(settings)),
+      largestDiameter_(largestDiameter(settings)),
+      skin_(resolvedSkin(settings, startFraction)),
+      adaptiveSkin_(adaptive),
+      skinMin_(adaptive ? skinMinFraction * smallestDiameter_ : skin_),
+      skinMax_(adaptive ? skinMaxFraction * smallestDiameter_ : skin_),
+      walls_(std::move(walls)),
+      search_(settings.box.xMin, settings.box.xMax, settings.box.yMin, settings.box.yMax,
+              largestDiameter_ + skin_)
+{
+    constexpr double pi = 3.14159265358979323846;
+    const ContactSettings& c = settings_.contact;
+    std::vector<double> m(nClasses_);
+    for (int k = 0; k < nClasses_; ++k) {
+        const double d = settings_.classes[k].diameter;
+        m[k] = settings_.classes[k].density * pi * d * d * d / 6.0;
+    }
+    for (int a = 0; a < nClasses_; ++a) {
+        for (int b = 0; b < nClasses_; ++b) {
+            const double mEff = m[a] * m[b] / (m[a] + m[b]);
+            pairLaws_.push_back(makeContactLaw(mEff, c.kn, c.kt, c.restitution, c.frictionParticle));
+        }
+        wallLaws_.push_back(makeContactLaw(m[a], c.kn, c.kt, c.restitutionWall, c.frictionWall));
+    }
+}
+
+template <class Derived, class Traits>
+void EngineBase<Derived, Traits>::checkClass(int cls) const
+{
+    if (cls < 0 || cls >= nClasses_) {
+        throw Error("classIndex = " + std::to_string(cls) + " is outside [0, "
+                    + std::to_string(nClasses_ - 1) + "]");
+    }
+}
+
+template <class Derived, class Traits>
+double EngineBase<Derived, Traits>::packBed(const BedRecipe& recipe)
+{
+    checkPackBed(p_.size(), recipe);
+    derived().packRandom(recipe.countPerClass, recipe.region, recipe.seed);
+    const double spent = settle(recipe.settleTime, recipe.keTolerance);
+    recipe_ = recipe;
+    return spent;
+}
+
+template <class Derived, class Traits>
+void EngineBase<Derived, Traits>::ensureReady()
+{
+    if (!listValid_) rebuildNeighbourList();
+    if (!forcesValid_) {
+        // First evaluation at the initial state: no history accumulation (dt = 0).
+        derived().computePairForces(0.0);
+        derived().addWallForcesAndKick(0.0, false, false);
+        forcesValid_ = true;
+    }
+}
+
+template <class Derived, class Traits>
+void EngineBase<Derived, Traits>::step(bool fluid)
+{
+    ensureReady();
+    const double dt = settings_.dt;
+    // First half-kick and drift; throws if a particle left the domain.
+    const double maxDisplacement2 = derived().drift();
+
+    // Rebuild once some particle may have closed half the skin: no contact can be missed.
+    // An adaptive skin above its minimum is also rebuilt (narrower) when it lasts long.
+    const bool due = 4.0 * maxDisplacement2 >= skin_ * skin_;
+    const bool tooWide = adaptiveSkin_ && skin_ > skinMin_ && lastBuildStep_ >= 0
+                         && stepCount_ - lastBuildStep_ >= skinRecheckAfter;
+    if (due || tooWide) {
+        if (adaptiveSkin_) adaptSkin(maxDisplacement2);
+        rebuildNeighbourList();
+    }
+
+    derived().computePairForces(dt);
+    derived().addWallForcesAndKick(dt, true, fluid);
+    ++stepCount_;
+}
+
+template <class Derived, class Traits>
+void EngineBase<Derived, Traits>::setFluidForceAtCurrentVelocity(bool fluid)
+{
+    const std::vector<double>& K = p_.dragCoefficient;
+    for (const AxisArrays& a : Traits::axes(p_)) {
+        for (std::size_t i = 0; i < p_.size(); ++i) {
+            (*a.fluid)[i] = fluid ? K[i] * ((*a.gasV)[i] - (*a.v)[i]) + (*a.extraF)[i] : 0.0;
+        }
+    }
+}
+
+template <class Derived, class Traits>
+void EngineBase<Derived, Traits>::advance(double dtOuter)
+{
+    const long nSub = subStepCount(dtOuter, settings_.dt);
+    ensureReady();
+    setFluidForceAtCurrentVelocity(true);
+
+    // Trapezoidal weights: the drag is evaluated at v(t0), v(t1), ..., v(tn), and the
+    // half-kicks apply the end values for half a sub-step and the inner ones for a whole one.
+    const std::size_t n = p_.size();
+    for (const AxisArrays& a : Traits::axes(p_)) {
+        for (std::size_t i = 0; i < n; ++i) (*a.meanV)[i] = 0.5 * (*a.v)[i];
+    }
+    for (long s = 1; s <= nSub; ++s) {
+        meanWeight_ = s == nSub ? 0.5 : 1.0;
+        step(true);
+    }
+    const double invN = 1.0 / static_cast<double>(nSub);
+    const std::vector<double>& K = p_.dragCoefficient;
+    for (const AxisArrays& a : Traits::axes(p_)) {
+        for (std::size_t i = 0; i < n; ++i) {
+            (*a.meanV)[i] *= invN;
+            (*a.meanFluid)[i] = K[i] * ((*a.gasV)[i] - (*a.meanV)[i]) + (*a.extraF)[i];
+        }
+    }
+}
+
+template <class Derived, class Traits>
+double EngineBase<Derived, Traits>::settle(double maxTime, double keTolerance)
+{
+    const std::int64_t first = stepCount_;
+    if (p_.size() == 0) return 0.0;
+    ensureReady();
+    setFluidForceAtCurrentVelocity(false);
+    const double n = static_cast<double>(p_.size());
+    const auto nSteps = static_cast<std::int64_t>(std::ceil(maxTime / settings_.dt - 1e-9));
+    // At rest means below the tolerance and not gaining energy: a packing released from
+    // rest starts below any tolerance and is then accelerating.
+    constexpr int checkEvery = 100;   // 1 ms at dt = 1e-5 s: cheap next to the steps
+    double previous = INFINITY;
+    for (std::int64_t k = 0; k < nSteps; ++k) {
+        if (k % checkEvery == 0) {
+            const double ke = derived().kineticEnergy() / n;
+            if (k > 0 && ke < keTolerance && ke < previous) break;
+            previous = ke;
+        }
+        step(false);
+    }
+    return static_cast<double>(stepCount_ - first) * settings_.dt;
+}
+
+template <class Derived, class Traits>
+void EngineBase<Derived, Traits>::rebuildNeighbourList()
+{
+    const std::size_t n = p_.size();
+    const int ni = static_cast<int>(n);
+
+    const int nThreads = settings_.nThreads;
+    const Index npOld = static_cast<Index>(pairs_.size());
+
+    // Old history by particle i (only non-zero entries matter: a zero is a fresh contact).
+    // Filled in parallel in any order: a pair (i, j) is in the list once, so the lookup
+    // below finds the same entry whatever the order within i's.
+    std::vector<int> oldStart(n + 1, 0);
+#pragma omp parallel for num_threads(nThreads) schedule(static)
+    for (Index k = 0; k < npOld; ++k) {
+        if (!Traits::isZero(pairs_.xi[k])) {
+#pragma omp atomic
+            ++oldStart[pairs_.i[k] + 1];
+        }
+    }
+    for (std::size_t q = 0; q < n; ++q) oldStart[q + 1] += oldStart[q];
+    std::vector<int> oldPartner(oldStart[n]);
+    std::vector<History> oldXi(oldStart[n]);
+    {
+        std::vector<int> fill(oldStart.begin(), oldStart.end() - 1);
+#pragma omp parallel for num_threads(nThreads) schedule(static)
+        for (Index k = 0; k < npOld; ++k) {
+            if (!Traits::isZero(pairs_.xi[k])) {
+                int slot;
+#pragma omp atomic capture
+                slot = fill[pairs_.i[k]]++;
+                oldPartner[slot] = pairs_.j[k];
+                oldXi[slot] = pairs_.xi[k];
+            }
+        }
+    }
+
+    Traits::findPairs(search_, p_, skin_, found_, nThreads);
+
+    // Stable counting sort of the found pairs into their groups, in parallel over chunks
+    // of the found list: a stable sort has one result, whatever the chunks.
+    const std::size_t np = found_.size();
+    const Index npi = static_cast<Index>(np);
+    std::vector<int>& blockOf = blockScratch_;
+    blockOf.resize(n);
+    for (int b = 0; b < nPairBlocks; ++b) {
+        std::fill(blockOf.begin() + pairBlockBegin(b, n), blockOf.begin() + pairBlockBegin(b + 1, n), b);
+    }
+    auto groupOf = [&](const IndexPair& q) {
+        const int bi = blockOf[q.i];
+        const int bj = blockOf[q.j];
+        return bi == bj ? bi : bj == bi + 1 ? nPairBlocks + bi : nPairGroups - 1;
+    };
+    std::vector<int>& dest = rebuildScratch_;
+    dest.resize(np);
+    std::vector<int> chunkCount(static_cast<std::size_t>(nThreads) * nPairGroups, 0);
+    pairs_.groupStart.assign(nPairGroups + 1, 0);
+#pragma omp parallel num_threads(nThreads)
+    {
+        const Index t = omp_get_thread_num();
+        const Index nt = omp_get_num_threads();
+        const Index first = npi * t / nt;
+        const Index last = npi * (t + 1) / nt;
+        int* count = chunkCount.data() + t * nPairGroups;
+        for (Index q = first; q < last; ++q) {
+            dest[q] = groupOf(found_[q]);
+            ++count[dest[q]];
+        }
+#pragma omp barrier
+#pragma omp single
+        {
+            // Each chunk's first slot per group: the group's start plus the earlier chunks'.
+            int total = 0;
+            for (int g = 0; g < nPairGroups; ++g) {
+                pairs_.groupStart[g] = total;
+                for (Index u = 0; u < nt; ++u) {
+                    const int c = chunkCount[u * nPairGroups + g];
+                    chunkCount[u * nPairGroups + g] = total;
+                    total += c;
+                }
+            }
+            pairs_.groupStart[nPairGroups] = total;
+        }
+        for (Index q = first; q < last; ++q) dest[q] = count[dest[q]]++;
+    }
+
+    pairs_.i.resize(np);
+    pairs_.j.resize(np);
+    pairs_.law.resize(np);
+    pairs_.xi.resize(np);
+#pragma omp parallel for num_threads(nThreads) schedule(static)
+    for (Index q = 0; q < npi; ++q) {
+        const int k = dest[q];
+        const int i = found_[q].i;
+        const int j = found_[q].j;
+        pairs_.i[k] = i;
+        pairs_.j[k] = j;
+        pairs_.law[k] = p_.classIndex[i] * nClasses_ + p_.classIndex[j];
+        History xi = History(Traits::zeroHistory());
+        for (int s = oldStart[i]; s < oldStart[i + 1]; ++s) {
+            if (oldPartner[s] == j) {
+                xi = oldXi[s];
+                break;
+            }
+        }
+        pairs_.xi[k] = xi;
+    }
+
+    // Walls: candidates within radius + skin, history carried over by (particle, wall);
+    // counted per particle, then filled, both in parallel.
+    const int nWalls = static_cast<int>(walls_.size());
+    auto isCandidate = [&](int i, int w) {
+        return walls_[w].distance(Traits::position(p_, i)) < p_.radius[i] + skin_;
+    };
+    WallListT<History> next;
+    next.start.assign(n + 1, 0);
+#pragma omp parallel for num_threads(nThreads) schedule(static)
+    for (int i = 0; i < ni; ++i) {
+        int count = 0;
+        for (int w = 0; w < nWalls; ++w) count += isCandidate(i, w);
+        next.start[i + 1] = count;
+    }
+    for (std::size_t q = 0; q < n; ++q) next.start[q + 1] += next.start[q];
+    next.wall.resize(next.start[n]);
+    next.xi.resize(next.start[n]);
+    const bool haveOld = wallContacts_.start.size() == n + 1;
+#pragma omp parallel for num_threads(nThreads) schedule(static)
+    for (int i = 0; i < ni; ++i) {
+        int s = next.start[i];
+        for (int w = 0; w < nWalls; ++w) {
+            if (!isCandidate(i, w)) continue;
+            History xi = History(Traits::zeroHistory());
+            if (haveOld) {
+                for (int o = wallContacts_.start[i]; o < wallContacts_.start[i + 1]; ++o) {
+                    if (wallContacts_.wall[o] == w) xi = wallContacts_.xi[o];
+                }
+            }
+            next.wall[s] = w;
+            next.xi[s] = xi;
+            ++s;
+        }
+    }
+    wallContacts_ = std::move(next);
+
+    for (const AxisArrays& a : Traits::axes(p_)) *a.xRef = *a.x;
+    listValid_ = true;
+    ++listBuilds_;
+    lastBuildStep_ = stepCount_;
+}
+
+template <class Derived, class Traits>
+void EngineBase<Derived, Traits>::adaptSkin(double maxDisplacement2)
+{
+    const std::int64_t interval = stepCount_ - lastBuildStep_;   // drifts since the build
+    if (lastBuildStep_ < 0 || interval < 1) return;   // no build to judge by: keep it
+    // The fastest particle moved sqrt(maxDisplacement2) in `interval` steps. At most a
+    // factor 2 per build either way.
+    const double perStep = std::sqrt(maxDisplacement2) / static_cast<double>(interval);
+    const double wanted = std::sqrt(skinCostRatio * smallestDiameter_ * perStep);
+    const double next = std::clamp(std::clamp(wanted, 0.5 * skin_, 2.0 * skin_), skinMin_, skinMax_);
+    if (next != skin_) setSkin(next);
+}
+
+template <class Derived, class Traits>
+void EngineBase<Derived, Traits>::setSkin(double skin)
+{
+    skin_ = skin;
+    search_.setMinCellSize(largestDiameter_ + skin);
+}
+
+template <class Derived, class Traits>
+std::size_t EngineBase<Derived, Traits>::listMemoryBytes() const
+{
+    std::size_t bytes = search_.memoryBytes() + found_.capacity() * sizeof(IndexPair);
+    auto add = [&](const auto& a) { bytes += a.capacity() * sizeof(a[0]); };
+    add(pairs_.i); add(pairs_.j); add(pairs_.law); add(pairs_.xi); add(pairs_.groupStart);
+    add(wallContacts_.start); add(wallContacts_.wall); add(wallContacts_.xi);
+    return bytes;
+}
+
+template class EngineBase<System, DiscTraits>;
+template class EngineBase<SlabSystem, SphereTraits>;
+
+} // namespace dem
