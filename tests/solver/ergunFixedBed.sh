@@ -67,6 +67,7 @@ classes { large { diameter $d; density 2525; } }
 deltaT 1e-5;
 frozen true;
 initialBed { positions "\$FOAM_CASE/positions.txt"; }
+${SCHEDULE:+couplingSchedule $SCHEDULE;}
 EOF2
 setFormulation "${2:-}"
 setMomentum
