@@ -13,10 +13,11 @@ Description
       per class) carries the bed's weight less buoyancy; U0/Umf with it
       says how far above its own Umf the case's bed is fluidized;
     - each class in the mixture: the velocity at which the drag on one of
-      its particles carries its weight less buoyancy. A class whose velocity is below the mixture's is
-      lifted by the gas at Umf, one above it sinks: the ratio of the two
-      classes' velocities is the drag model's size contrast, which drives
-      segregation (a polydisperse closure such as Beetstra's narrows it);
+      its particles carries its weight less buoyancy. A class whose
+      velocity is below the mixture's is lifted by the gas at Umf, one
+      above it sinks: the ratio of the two classes' velocities is the drag
+      model's size contrast, which drives segregation (a polydisperse
+      closure such as Beetstra's narrows it);
     - each class alone (a bed of that size only), and the terminal velocity
       of a lone particle.
 
