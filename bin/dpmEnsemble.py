@@ -94,3 +94,38 @@ def fmt(mean, half, digits=3):
     if not math.isfinite(half):
         return "%.*f" % (digits, mean)
     return "%.*f +- %.*f" % (digits, mean, digits, half)
+
+
+def shift_ci(variant, baseline, level=LEVEL):
+    """How far a variant moves a contrast from the baseline's.
+
+    variant, baseline: the values over seeds of the contrast's cases, [a]
+    (the contrast is a's mean) or [a, b] (a - b), in the same order for
+    both. Returns (shift, half-width, borrowed): shift = the variant's
+    contrast minus the baseline's, half-width of its interval by
+    Welch-Satterthwaite over the independent variance estimates. A variant
+    case with one seed has no spread of its own: it takes the baseline
+    case's sample variance (same packings, assumed the same scatter;
+    borrowed = True), which makes the interval a prediction interval for
+    one run. nan half-width where a baseline case has fewer than two seeds.
+    """
+    shift, terms, borrowed = 0.0, [], False
+    for sign, v, b in zip((1.0, -1.0), variant, baseline):
+        vv, bb = finite(v), finite(b)
+        if len(vv) == 0 or len(bb) == 0:
+            return math.nan, math.nan, False
+        shift += sign * float(vv.mean() - bb.mean())
+        if len(bb) < 2:
+            return shift, math.nan, False
+        base = [bb.var(ddof=1), len(bb) - 1, 1.0 / len(bb)]    # s^2, dof, weight
+        if len(vv) >= 2:
+            terms.append([vv.var(ddof=1), len(vv) - 1, 1.0 / len(vv)])
+        else:
+            base[2] += 1.0 / len(vv)
+            borrowed = True
+        terms.append(base)
+    var = sum(s2 * c for s2, _, c in terms)
+    if var == 0:
+        return shift, 0.0, borrowed
+    dof = var ** 2 / sum((s2 * c) ** 2 / d for s2, d, c in terms)
+    return shift, float(stats.t.ppf(0.5 + level / 2, dof) * math.sqrt(var)), borrowed

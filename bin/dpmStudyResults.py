@@ -1,6 +1,7 @@
 """results/ of a dpmStudy directory: one row per case, the ensembles over
 seeds with 95 % intervals, the paper's findings 2-4 as differences between
-ensembles, and the figures. Used by bin/dpmStudy (-results)."""
+ensembles, what each variant does to them (dpmStudyVerdicts) and the
+figures. Used by bin/dpmStudy (-results)."""
 
 import csv
 import os
@@ -11,6 +12,7 @@ from collections import OrderedDict
 import numpy as np
 
 import dpmEnsemble as ens
+import dpmStudyVerdicts
 from dpmParticleIO import read_postprocessing
 
 HERE = os.path.dirname(os.path.realpath(__file__))
@@ -223,7 +225,7 @@ def findings(rows):
                 verdict = "as the paper" if sign == paper else "reversed"
             out.append(OrderedDict(variant=v, finding=finding, comparison=what, quantity=k,
                                    paperSign=paper, difference=diff, CI=half, nA=na, nB=nb,
-                                   sign=sign, verdict=verdict))
+                                   sign=sign, verdict=verdict, cases=(a, b)))
     return out
 
 
@@ -393,8 +395,12 @@ def results(study_dir, X, rate_window=None, pictures=True):
     found = findings(rows)
     write_csv(os.path.join(out, "ensemble.csv"), ensemble)
     write_csv(os.path.join(out, "ensembleWindows.csv"), ewindows)
-    write_csv(os.path.join(out, "findings.csv"), found)
+    write_csv(os.path.join(out, "findings.csv"),
+              [OrderedDict((k, v) for k, v in r.items() if k != "cases") for r in found])
     write_ensemble(out, ensemble, ewindows, found, X, rate_window)
+    dpmStudyVerdicts.write_verdicts(
+        out, dpmStudyVerdicts.variant_effects(found, groups_of([r for r in rows if r["finished"]])),
+        ens.LEVEL)
     write_variants(out, cases)
     say("results: %s" % os.path.join(out, "summary.md"))
     import dpmStudyFigures

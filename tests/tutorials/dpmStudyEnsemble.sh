@@ -10,7 +10,9 @@
 #   - Welch's interval of a difference of two ensembles with equal
 #     spreads (dof 4) and with one spread zero (dof 2);
 #   - the signs and verdicts of findings 2-4, a one-seed variant screened
-#     without an interval, a case without a seed suffix counted alone, a
+#     without an interval, what a variant does to each finding against the
+#     baseline's seeds (the shift's interval, a one-seed case taking the
+#     baseline's scatter; a three-seed variant that turns findings 3, 4 round), a case without a seed suffix counted alone, a
 #     case that has not reached its end time left out of the ensemble.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
@@ -50,6 +52,9 @@ case("w0.50_8bar", 0.5, 8, 1, 0.33)                 # an unseeded case
 case("w0.50_1bar_seed4", 0.5, 1, 4, 0.9, tEnd=1.0)  # still running: left out
 case("w0.50_1bar_upwind", 0.5, 1, 1, 0.45, variant="upwind")
 case("w0.50_64bar_upwind", 0.5, 64, 1, 0.35, variant="upwind")
+for k, m75 in enumerate((0.6, 0.62, 0.64), 1):     # a variant over three seeds
+    case("w0.25_1bar_drag_seed%d" % k, 0.25, 1, k, 0.5, variant="drag")
+    case("w0.75_1bar_drag_seed%d" % k, 0.75, 1, k, m75, variant="drag")
 PY
 dpmStudy study -results -noPictures -mean 1 > log.results 2>&1 || { cat log.results; fail "dpmStudy -results"; }
 cat log.results
@@ -90,13 +95,33 @@ assert f["verdict"] == "reversed", f
 f = F["upwind", "final M, 64 - 1 bar, w 0.5"]
 close(f["difference"], -0.10)
 assert f["sign"] == "-?" and f["verdict"].startswith("one seed: against"), f
+# Variants against the baseline's seeds (verdicts.csv): the shift of a
+# contrast, its interval by Welch-Satterthwaite over the independent
+# variances; a one-seed case borrows the baseline case's (weight 1 + 1/3).
+V = {(r["variant"], r["comparison"]): r for r in csv.DictReader(open("study/results/verdicts.csv"))}
+v = V["upwind", "final M, 64 - 1 bar, w 0.5"]     # two borrowed variances 0.01: dof 4
+close(v["shift"], -0.40); close(v["shiftCI"], T4 * sqrt(2 * 0.01 * (1 + 1 / 3)))
+assert v["borrowed"] == "True" and v["effect"] == "within the packings' scatter", v
+v = V["upwind", "horizontal index at 64 bar, w 0.5"]   # one borrowed variance: dof 2
+close(v["shift"], -0.2); close(v["shiftCI"], T2 * sqrt(0.01 * (1 + 1 / 3)))
+assert v["effect"] == "within the packings' scatter", v
+v = V["drag", "final M, w 0.75 - w 0.25, 1 bar"]   # own spreads 0.0004 and 0 each: dof 4
+close(v["value"], 0.12); close(v["CI"], T2 * sqrt(0.0004 / 3))
+close(v["shift"], 0.40); close(v["shiftCI"], T4 * sqrt(2 * 0.0004 / 3))
+assert v["borrowed"] == "False" and v["effect"] == "turns it round", v
+v = V["drag", "M/M(0) in the rate window, w 0.75 - w 0.25, 1 bar"]
+close(v["shift"], 0.15 + 0.35)
+assert v["effect"] == "turns it round", v
+assert ("drag", "final M, 64 - 1 bar, w 0.5") not in V     # drag has no 64-bar case
 rows = list(csv.DictReader(open("study/results/summary.csv")))
-assert len(rows) == 16, len(rows)      # the running case is in the summary
+assert len(rows) == 22, len(rows)      # the running case is in the summary
 assert {r["case"]: r["seed"] for r in rows}["w0.50_8bar"] == "", rows
 PY
 grep -q "^| baseline | 0.50 | 1 | 3 | 1 | 2.00 | 0.800 +- 0.000 | 0.400 +- 0.248 |" study/results/ensemble.md \
     || fail "ensemble.md row"
 grep -q "^## upwind" study/results/variants.md || fail "variants.md lacks the variant"
+grep -q "^| 3 | final M, w 0.75 - w 0.25, 1 bar | + | -0.280 +- 0.050 | turns it round | drag |" \
+    study/results/verdicts.md || fail "verdicts.md lacks finding 3 turned round by drag"
 for f in mixing_1bar.png mixing_upwind_1bar.png indices.png upwind_indices.png hydrodynamics.png
 do
     [ -s "study/results/$f" ] || fail "no results/$f"
