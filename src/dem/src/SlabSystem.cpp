@@ -27,7 +27,7 @@ const Settings& validatedSlab(const Settings& s)
     return s;
 }
 
-constexpr double skinFraction = 0.1;   // of d_min, the skin unless Settings::neighbourSkin >= 0
+constexpr double skinStartFraction = 0.4;   // of d_min, the adaptive skin's start, as System's
 
 } // namespace
 
@@ -73,7 +73,7 @@ void SlabParticles::append(int cls, double diam, double density, const Vec3& pos
 
 SlabSystem::SlabSystem(const Settings& settings)
     : EngineBase(validatedSlab(settings), slabWalls(settings.box, settings.slabDepth),
-                 skinFraction, false)
+                 skinStartFraction, settings.neighbourSkin < 0.0)
 {
 }
 

@@ -81,6 +81,8 @@ struct SphereTraits {
     }
     static bool isZero(const Eigen::Vector3d& xi) { return xi.isZero(0.0); }
     static Eigen::Vector3d zeroHistory() { return Eigen::Vector3d::Zero(); }
+    /// Odd: the displacement sums v_i - v_j at the contact point, which a swap negates.
+    static Eigen::Vector3d swapped(const Eigen::Vector3d& xi) { return -xi; }
     static std::array<AxisArrays, 3> axes(Particles& p)
     {
         return {{{&p.x, &p.xRef, &p.vx, &p.gasVx, &p.extraFx, &p.fluidX, &p.meanVx, &p.meanFluidX},
@@ -90,8 +92,8 @@ struct SphereTraits {
 };
 
 /// Soft-sphere DEM of spheres in a slab; the step is EngineBase's (velocity Verlet, dashpots
-/// fed by the half-step velocity, the drag implicit), with 3-vectors. Its skin is fixed
-/// (Settings::neighbourSkin, or 0.1 d_min if that is negative).
+/// fed by the half-step velocity, the drag implicit), with 3-vectors. Its skin is
+/// Settings::neighbourSkin, or adaptive as System's if that is negative.
 class SlabSystem : public EngineBase<SlabSystem, SphereTraits> {
 public:
     explicit SlabSystem(const Settings& settings);
