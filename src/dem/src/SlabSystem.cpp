@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include <omp.h>
+
 namespace dem {
 
 namespace {
@@ -121,46 +123,85 @@ void SlabSystem::computePairForces(double historyDt)
 {
     SlabParticles& p = p_;
     const std::size_t n = p.size();
-    const ContactLaw* laws = pairLaws_.data();
+    const int* pi = pairs_.i.data();
+    const int* pj = pairs_.j.data();
+    const int* law = pairs_.law.data();
     const int* groupStart = pairs_.groupStart.data();
-    // Sums over each particle's pairs; p.t* hold the sum of nHat x Ft until
+    Vec3* xiT = pairs_.xi.data();
+    const double* x = p.x.data();
+    const double* y = p.y.data();
+    const double* z = p.z.data();
+    const double* vx = p.vx.data();
+    const double* vy = p.vy.data();
+    const double* vz = p.vz.data();
+    const double* wx = p.wx.data();
+    const double* wy = p.wy.data();
+    const double* wz = p.wz.data();
+    const double* r = p.radius.data();
+    const ContactLaw* laws = pairLaws_.data();
+    // Sums over each particle's pairs; the t* hold the sum of nHat x Ft until
     // addWallForcesAndKick multiplies it by the radius (the torque on either partner is
     // r nHat x Ft, see contactForce).
+    double* sumFx = p.fx.data();
+    double* sumFy = p.fy.data();
+    double* sumFz = p.fz.data();
+    double* sumTx = p.tx.data();
+    double* sumTy = p.ty.data();
+    double* sumTz = p.tz.data();
+
+    // A touching pair (found by the group's first pass)
     auto pairForce = [&](Index k, std::size_t& touching, double& maxOverlap) {
-        const int i = pairs_.i[k];
-        const int j = pairs_.j[k];
-        const Vec3 d(p.x[j] - p.x[i], p.y[j] - p.y[i], p.z[j] - p.z[i]);
-        const double d2 = d.squaredNorm();
-        const double rSum = p.radius[i] + p.radius[j];
-        if (d2 >= rSum * rSum) {
-            pairs_.xi[k].setZero();   // separated: the contact's history ends
-            return;
-        }
-        const double dist = std::sqrt(d2);
+        const int i = pi[k];
+        const int j = pj[k];
+        const Vec3 d(x[j] - x[i], y[j] - y[i], z[j] - z[i]);
+        const double dist = std::sqrt(d.x() * d.x() + d.y() * d.y() + d.z() * d.z());
         PairGeometry3 g;
-        g.overlap = rSum - dist;
+        g.overlap = r[i] + r[j] - dist;
         g.nHat = d / dist;
-        g.rI = p.radius[i];
-        g.rJ = p.radius[j];
+        g.rI = r[i];
+        g.rJ = r[j];
         // Contact points: v_i + w_i x (r_i n) and v_j + w_j x (-r_j n).
-        g.vRel = p.velocity(i) - p.velocity(j) + (g.rI * p.spin(i) + g.rJ * p.spin(j)).cross(g.nHat);
-        g.xiT = pairs_.xi[k];
-        const PairForce3 f = contactForce(g, laws[pairs_.law[k]], historyDt);
-        pairs_.xi[k] = f.xiT;
+        g.vRel = Vec3(vx[i] - vx[j], vy[i] - vy[j], vz[i] - vz[j])
+                 + (g.rI * Vec3(wx[i], wy[i], wz[i]) + g.rJ * Vec3(wx[j], wy[j], wz[j])).cross(g.nHat);
+        g.xiT = xiT[k];
+        const PairForce3 f = contactForce(g, laws[law[k]], historyDt);
+        xiT[k] = f.xiT;
         const Vec3 nxF = g.nHat.cross(f.ft);
-        p.fx[i] += f.force.x(); p.fy[i] += f.force.y(); p.fz[i] += f.force.z();
-        p.fx[j] -= f.force.x(); p.fy[j] -= f.force.y(); p.fz[j] -= f.force.z();
-        p.tx[i] += nxF.x(); p.ty[i] += nxF.y(); p.tz[i] += nxF.z();
-        p.tx[j] += nxF.x(); p.ty[j] += nxF.y(); p.tz[j] += nxF.z();
+        sumFx[i] += f.force.x(); sumFy[i] += f.force.y(); sumFz[i] += f.force.z();
+        sumFx[j] -= f.force.x(); sumFy[j] -= f.force.y(); sumFz[j] -= f.force.z();
+        sumTx[i] += nxF.x(); sumTy[i] += nxF.y(); sumTz[i] += nxF.z();
+        sumTx[j] += nxF.x(); sumTy[j] += nxF.y(); sumTz[j] += nxF.z();
         ++touching;
         maxOverlap = std::max(maxOverlap, g.overlap);
     };
+
+    // The groups as sumPairGroups runs them, in two passes as System's: the touching pairs
+    // picked out without a branch, then their forces in list order.
+    touchingScratch_.resize(pairs_.size());   // (a loaded state's list has no build here)
+    int* touchingPairs = touchingScratch_.data();
     auto group = [&](int gr, std::size_t& touching, double& maxOverlap) {
-        for (Index k = groupStart[gr]; k < groupStart[gr + 1]; ++k) pairForce(k, touching, maxOverlap);
+        int* picked = touchingPairs + groupStart[gr];
+        int m = 0;
+        for (int k = groupStart[gr]; k < groupStart[gr + 1]; ++k) {
+            const int i = pi[k];
+            const int j = pj[k];
+            const double dx = x[j] - x[i];
+            const double dy = y[j] - y[i];
+            const double dz = z[j] - z[i];
+            const double rSum = r[i] + r[j];
+            const bool touch = !(dx * dx + dy * dy + dz * dz >= rSum * rSum);   // NaN: touching
+            picked[m] = k;
+            m += touch;
+            double* xi = xiT[k].data();   // separated: the contact's history ends
+            xi[0] = touch ? xi[0] : 0.0;
+            xi[1] = touch ? xi[1] : 0.0;
+            xi[2] = touch ? xi[2] : 0.0;
+        }
+        for (int q = 0; q < m; ++q) pairForce(picked[q], touching, maxOverlap);
     };
     auto zeroBlock = [&](std::size_t first, std::size_t last) {
-        for (auto* a : {&p.fx, &p.fy, &p.fz, &p.tx, &p.ty, &p.tz}) {
-            std::fill(a->begin() + first, a->begin() + last, 0.0);
+        for (double* a : {sumFx, sumFy, sumFz, sumTx, sumTy, sumTz}) {
+            std::fill(a + first, a + last, 0.0);
         }
     };
     sumPairGroups(settings_.nThreads, n, zeroBlock, group, contactCount_, maxOverlap_);
@@ -170,68 +211,148 @@ void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
 {
     const Index n = static_cast<Index>(p_.size());
     const double h = 0.5 * settings_.dt;
-    const Vec3 g(settings_.gravity[0], settings_.gravity[1], 0.0);
     const double weight = meanWeight_;
+    const int* wStart = wallContacts_.start.data();
+    const int* wWall = wallContacts_.wall.data();
+    Vec3* wXi = wallContacts_.xi.data();
+    const PlaneWall3* walls = walls_.data();
+    const ContactLaw* wallLaws = wallLaws_.data();
     SlabParticles& p = p_;
 
     std::size_t touching = 0;
     double maxOverlap = maxOverlap_;
-#pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
-    reduction(+ : touching) reduction(max : maxOverlap)
-    for (Index i = 0; i < n; ++i) {
-        const double ri = p.radius[i];
-        Vec3 force(p.fx[i], p.fy[i], p.fz[i]);
-        Vec3 torque = ri * Vec3(p.tx[i], p.ty[i], p.tz[i]);
-        const Vec3 pos = p.position(i);
-        const Vec3 v = p.velocity(i);
-        const Vec3 w = p.spin(i);
-        for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
-            const PlaneWall3& wall = walls_[wallContacts_.wall[s]];
-            const double overlap = ri - wall.distance(pos);
-            if (overlap <= 0.0) {
-                wallContacts_.xi[s].setZero();
-                continue;
+#pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
+    reduction(max : maxOverlap)
+    {
+        // As System's: each thread its own range of particles for both loops; the few
+        // particles with wall candidates first (their wall forces added to the pair sums in
+        // wall order, their torque made whole), then every particle's kick, vectorised.
+        const Index nThreads = omp_get_num_threads();
+        const Index thread = omp_get_thread_num();
+        const Index first = n * thread / nThreads;
+        const Index last = n * (thread + 1) / nThreads;
+        for (Index i = first; i < last; ++i) {
+            if (wStart[i] == wStart[i + 1]) continue;
+            const double ri = p.radius[i];
+            Vec3 force(p.fx[i], p.fy[i], p.fz[i]);
+            Vec3 torque = ri * Vec3(p.tx[i], p.ty[i], p.tz[i]);
+            const Vec3 pos = p.position(i);
+            const Vec3 v = p.velocity(i);
+            const Vec3 w = p.spin(i);
+            for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
+                const PlaneWall3& wall = walls[wWall[s]];
+                const double overlap = ri - wall.distance(pos);
+                if (overlap <= 0.0) {
+                    wXi[s].setZero();
+                    continue;
+                }
+                PairGeometry3 c;
+                c.overlap = overlap;
+                c.nHat = -wall.nHat;
+                c.vRel = v + (ri * w).cross(c.nHat);
+                c.rI = ri;
+                c.rJ = 0.0;
+                c.xiT = wXi[s];
+                const PairForce3 f = contactForce(c, wallLaws[p.classIndex[i]], historyDt);
+                force += f.force;
+                torque += f.torqueI;
+                wXi[s] = f.xiT;
+                ++touching;
+                maxOverlap = std::max(maxOverlap, overlap);
             }
-            PairGeometry3 c;
-            c.overlap = overlap;
-            c.nHat = -wall.nHat;
-            c.vRel = v + (ri * w).cross(c.nHat);
-            c.rI = ri;
-            c.rJ = 0.0;
-            c.xiT = wallContacts_.xi[s];
-            const PairForce3 f = contactForce(c, wallLaws_[p.classIndex[i]], historyDt);
-            force += f.force;
-            torque += f.torqueI;
-            wallContacts_.xi[s] = f.xiT;
-            ++touching;
-            maxOverlap = std::max(maxOverlap, overlap);
+            p.fx[i] = force.x(); p.fy[i] = force.y(); p.fz[i] = force.z();
+            p.tx[i] = torque.x(); p.ty[i] = torque.y(); p.tz[i] = torque.z();
         }
-        p.fx[i] = force.x(); p.fy[i] = force.y(); p.fz[i] = force.z();
-        p.tx[i] = torque.x(); p.ty[i] = torque.y(); p.tz[i] = torque.z();
-        if (!kick) continue;
-
-        const double invM = p.invMass[i];
-        Vec3 vNew;
-        if (fluid) {
-            // Second half-kick with the drag implicit, as System.
-            const double K = p.dragCoefficient[i];
-            const Vec3 gas(p.gasVx[i], p.gasVy[i], p.gasVz[i]);
-            const Vec3 extra(p.extraFx[i], p.extraFy[i], p.extraFz[i]);
-            vNew = (v + h * ((force + K * gas + extra) * invM + g)) / (1.0 + h * K * invM);
-            const Vec3 fluidForce = K * (gas - vNew) + extra;
-            p.fluidX[i] = fluidForce.x(); p.fluidY[i] = fluidForce.y(); p.fluidZ[i] = fluidForce.z();
-            p.meanVx[i] += weight * vNew.x();
-            p.meanVy[i] += weight * vNew.y();
-            p.meanVz[i] += weight * vNew.z();
+        if (kick && fluid) {
+            kickLoop<true, true>(first, last, h, weight);
+        } else if (kick) {
+            kickLoop<true, false>(first, last, h, weight);
         } else {
-            vNew = v + h * (force * invM + g);
+            kickLoop<false, false>(first, last, h, weight);
         }
-        p.vx[i] = vNew.x(); p.vy[i] = vNew.y(); p.vz[i] = vNew.z();
-        const Vec3 wNew = w + h * p.invInertia[i] * torque;
-        p.wx[i] = wNew.x(); p.wy[i] = wNew.y(); p.wz[i] = wNew.z();
     }
     contactCount_ += touching;
     maxOverlap_ = maxOverlap;
+}
+
+template <bool Kick, bool Fluid>
+void SlabSystem::kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, double weight)
+{
+    SlabParticles& p = p_;
+    const int* wStart = wallContacts_.start.data();
+    const double gx = settings_.gravity[0];
+    const double gy = settings_.gravity[1];
+    const double* fx = p.fx.data();
+    const double* fy = p.fy.data();
+    const double* fz = p.fz.data();
+    double* tx = p.tx.data();
+    double* ty = p.ty.data();
+    double* tz = p.tz.data();
+    const double* radius = p.radius.data();
+    const double* invMass = p.invMass.data();
+    const double* invInertia = p.invInertia.data();
+    const double* dragK = p.dragCoefficient.data();
+    const double* gasVx = p.gasVx.data();
+    const double* gasVy = p.gasVy.data();
+    const double* gasVz = p.gasVz.data();
+    const double* extraFx = p.extraFx.data();
+    const double* extraFy = p.extraFy.data();
+    const double* extraFz = p.extraFz.data();
+    double* vx = p.vx.data();
+    double* vy = p.vy.data();
+    double* vz = p.vz.data();
+    double* wx = p.wx.data();
+    double* wy = p.wy.data();
+    double* wz = p.wz.data();
+    double* fluidX = p.fluidX.data();
+    double* fluidY = p.fluidY.data();
+    double* fluidZ = p.fluidZ.data();
+    double* meanVx = p.meanVx.data();
+    double* meanVy = p.meanVy.data();
+    double* meanVz = p.meanVz.data();
+#pragma omp simd
+    for (Index i = first; i < last; ++i) {
+        // Particles with walls have their whole torque already (the loop before): a factor
+        // of 1 keeps it exactly, and a select of loaded values vectorises.
+        const double scale = wStart[i] == wStart[i + 1] ? radius[i] : 1.0;
+        const double txi = scale * tx[i];
+        const double tyi = scale * ty[i];
+        const double tzi = scale * tz[i];
+        tx[i] = txi;
+        ty[i] = tyi;
+        tz[i] = tzi;
+        if constexpr (Kick) {
+            const double invM = invMass[i];
+            if constexpr (Fluid) {
+                // Second half-kick with the drag implicit, as System.
+                const double K = dragK[i];
+                const double denominator = 1.0 + h * K * invM;
+                const double vxNew = (vx[i] + h * ((fx[i] + K * gasVx[i] + extraFx[i]) * invM + gx))
+                                     / denominator;
+                const double vyNew = (vy[i] + h * ((fy[i] + K * gasVy[i] + extraFy[i]) * invM + gy))
+                                     / denominator;
+                const double vzNew = (vz[i] + h * ((fz[i] + K * gasVz[i] + extraFz[i]) * invM))
+                                     / denominator;
+                vx[i] = vxNew;
+                vy[i] = vyNew;
+                vz[i] = vzNew;
+                fluidX[i] = K * (gasVx[i] - vxNew) + extraFx[i];
+                fluidY[i] = K * (gasVy[i] - vyNew) + extraFy[i];
+                fluidZ[i] = K * (gasVz[i] - vzNew) + extraFz[i];
+                meanVx[i] += weight * vxNew;
+                meanVy[i] += weight * vyNew;
+                meanVz[i] += weight * vzNew;
+            } else {
+                vx[i] += h * (fx[i] * invM + gx);
+                vy[i] += h * (fy[i] * invM + gy);
+                vz[i] += h * (fz[i] * invM);
+            }
+            const double hI = h * invInertia[i];
+            wx[i] += hI * txi;
+            wy[i] += hI * tyi;
+            wz[i] += hI * tzi;
+        }
+    }
 }
 
 bool SlabSystem::inside(std::size_t i) const
