@@ -314,7 +314,8 @@ void SlabSystem::kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, d
     for (Index i = first; i < last; ++i) {
         // Particles with walls have their whole torque already (the loop before): a factor
         // of 1 keeps it exactly, and a select of loaded values vectorises.
-        const double scale = wStart[i] == wStart[i + 1] ? radius[i] : 1.0;
+        const double ri = radius[i];
+        const double scale = wStart[i] == wStart[i + 1] ? ri : 1.0;
         const double txi = scale * tx[i];
         const double tyi = scale * ty[i];
         const double tzi = scale * tz[i];
@@ -368,26 +369,59 @@ double SlabSystem::drift()
     const Index n = static_cast<Index>(p_.size());
     const double dt = settings_.dt;
     const double h = 0.5 * dt;
-    const Vec3 g(settings_.gravity[0], settings_.gravity[1], 0.0);
+    const double gx = settings_.gravity[0];
+    const double gy = settings_.gravity[1];
+    const Box& b = settings_.box;
+    const double depth = settings_.slabDepth;
     SlabParticles& p = p_;
+    // Plain pointers: a simd loop, which needs no alias checks.
+    double* x = p.x.data();
+    double* y = p.y.data();
+    double* z = p.z.data();
+    double* vx = p.vx.data();
+    double* vy = p.vy.data();
+    double* vz = p.vz.data();
+    double* wx = p.wx.data();
+    double* wy = p.wy.data();
+    double* wz = p.wz.data();
+    const double* fx = p.fx.data();
+    const double* fy = p.fy.data();
+    const double* fz = p.fz.data();
+    const double* tx = p.tx.data();
+    const double* ty = p.ty.data();
+    const double* tz = p.tz.data();
+    const double* fluidX = p.fluidX.data();
+    const double* fluidY = p.fluidY.data();
+    const double* fluidZ = p.fluidZ.data();
+    const double* xRef = p.xRef.data();
+    const double* yRef = p.yRef.data();
+    const double* zRef = p.zRef.data();
+    const double* invMass = p.invMass.data();
+    const double* invInertia = p.invInertia.data();
 
     double maxDisplacement2 = 0.0;
     int lost = 0;
-#pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
+#pragma omp parallel for simd num_threads(settings_.nThreads) schedule(static) \
     reduction(max : maxDisplacement2) reduction(| : lost)
     for (Index i = 0; i < n; ++i) {
-        const double invM = p.invMass[i];
-        const Vec3 force(p.fx[i] + p.fluidX[i], p.fy[i] + p.fluidY[i], p.fz[i] + p.fluidZ[i]);
-        const Vec3 v = p.velocity(i) + h * (force * invM + g);
-        const Vec3 w = p.spin(i) + h * p.invInertia[i] * Vec3(p.tx[i], p.ty[i], p.tz[i]);
-        p.vx[i] = v.x(); p.vy[i] = v.y(); p.vz[i] = v.z();
-        p.wx[i] = w.x(); p.wy[i] = w.y(); p.wz[i] = w.z();
-        p.x[i] += dt * v.x();
-        p.y[i] += dt * v.y();
-        p.z[i] += dt * v.z();
-        const Vec3 moved(p.x[i] - p.xRef[i], p.y[i] - p.yRef[i], p.z[i] - p.zRef[i]);
-        maxDisplacement2 = std::max(maxDisplacement2, moved.squaredNorm());
-        lost |= !inside(i);
+        const double invM = invMass[i];
+        const double hI = h * invInertia[i];
+        vx[i] += h * ((fx[i] + fluidX[i]) * invM + gx);
+        vy[i] += h * ((fy[i] + fluidY[i]) * invM + gy);
+        vz[i] += h * ((fz[i] + fluidZ[i]) * invM);
+        wx[i] += hI * tx[i];
+        wy[i] += hI * ty[i];
+        wz[i] += hI * tz[i];
+        x[i] += dt * vx[i];
+        y[i] += dt * vy[i];
+        z[i] += dt * vz[i];
+        const double dx = x[i] - xRef[i];
+        const double dy = y[i] - yRef[i];
+        const double dz = z[i] - zRef[i];
+        maxDisplacement2 = std::max(maxDisplacement2, dx * dx + dy * dy + dz * dz);
+        // Written so that NaN counts as lost too (as inside()).
+        lost |= !(x[i] >= b.xMin && x[i] <= b.xMax && y[i] >= b.yMin && y[i] <= b.yMax
+                  && z[i] >= 0.0 && z[i] <= depth);
     }
     if (lost) throwLostParticle();
     return maxDisplacement2;
