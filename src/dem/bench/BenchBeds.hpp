@@ -54,22 +54,33 @@ inline std::string settledStatePath()
     return env ? env : "/tmp/demBench-settledBed.state";
 }
 
+/// The state cached at `path`, loaded with `settings`; without a usable cache, make()'s
+/// simulation saved there first.
+template <class Make>
+std::unique_ptr<dem::Simulation> cached(const std::string& path, const dem::Settings& settings,
+                                        Make&& make)
+{
+    auto sim = std::make_unique<dem::Simulation>(settings);
+    try {
+        sim->load(path);
+        return sim;
+    } catch (const dem::Error&) {
+        // No usable cache: make it.
+    }
+    make()->save(path);
+    sim->load(path);
+    return sim;
+}
+
 /// The settled bed, from the cache or packed and settled anew (about 1 min).
 inline std::unique_ptr<dem::Simulation> settledBed(int threads)
 {
-    auto sim = std::make_unique<dem::Simulation>(bedSettings(threads));
-    try {
-        sim->load(settledStatePath());
-        return sim;
-    } catch (const dem::Error&) {
-        // No usable cache: make the bed as the paper does.
-    }
-    auto fresh = std::make_unique<dem::Simulation>(bedSettings(2));
-    fresh->packRandom({6610, 1440}, {0.0, 0.15, 0.0, 0.35}, 2012);
-    fresh->settle(1.5, 1e-12);   // as the SettledBed test: at rest after ~0.9 s
-    fresh->save(settledStatePath());
-    sim->load(settledStatePath());
-    return sim;
+    return cached(settledStatePath(), bedSettings(threads), [] {
+        auto fresh = std::make_unique<dem::Simulation>(bedSettings(2));
+        fresh->packRandom({6610, 1440}, {0.0, 0.15, 0.0, 0.35}, 2012);
+        fresh->settle(1.5, 1e-12);   // as the SettledBed test: at rest after ~0.9 s
+        return fresh;
+    });
 }
 
 /// The fluidized beds' drag inputs for the CFD step starting at sim.time(): K = m g/u

@@ -35,19 +35,12 @@ void cfdStep(dem::Simulation& sim, long cfdStepIndex)
 std::unique_ptr<dem::Simulation> fluidizedBed(int threads)
 {
     const std::string path = demBench::settledStatePath() + ".fluidized";
-    auto sim = std::make_unique<dem::Simulation>(demBench::bedSettings(threads));
-    try {
-        sim->load(path);
-        return sim;
-    } catch (const dem::Error&) {
-        // No usable cache: fluidize the settled bed.
-    }
-    auto fresh = demBench::settledBed(2);
-    const long steps = std::lround(warmUp / dtCfd);
-    for (long k = 0; k < steps; ++k) cfdStep(*fresh, k);
-    fresh->save(path);
-    sim->load(path);
-    return sim;
+    return demBench::cached(path, demBench::bedSettings(threads), [] {
+        auto fresh = demBench::settledBed(2);
+        const long steps = std::lround(warmUp / dtCfd);
+        for (long k = 0; k < steps; ++k) cfdStep(*fresh, k);
+        return fresh;
+    });
 }
 
 /// Argument: threads. 500 CFD steps (0.05 s) from the cached fluidized state; the

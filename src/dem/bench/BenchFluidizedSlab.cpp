@@ -22,40 +22,25 @@ constexpr double warmUp = 0.3;        // s of forcing from the settled slab
 constexpr double bedTop = 0.025;      // m, H of the forcing
 constexpr double lift = 0.75;         // of the weight, held by the drag on average
 
-std::unique_ptr<dem::Simulation> settledSlab(int threads)
-{
-    auto sim = std::make_unique<dem::Simulation>(demBench::slabSettings(threads));
-    try {
-        sim->load(demBench::settledSlabPath());
-        return sim;
-    } catch (const dem::Error&) {
-        // No usable cache: make the bed as BM_SlabBed does.
-    }
-    sim->packRandom({1500, 500}, {0.0, 0.05, 0.0, 0.06}, 2012);
-    sim->settle(0.5, 1e-12);
-    return sim;
-}
-
 std::unique_ptr<dem::Simulation> fluidizedSlab(int threads)
 {
     const std::string path = demBench::settledSlabPath() + ".fluidized";
-    auto sim = std::make_unique<dem::Simulation>(demBench::slabSettings(threads));
-    try {
-        sim->load(path);
-        return sim;
-    } catch (const dem::Error&) {
-        // No usable cache: fluidize the settled slab.
-    }
-    auto fresh = settledSlab(2);
-    const long steps = std::lround(warmUp / dtCfd);
-    for (long k = 0; k < steps; ++k) {
-        if (k % sortEvery == 0) fresh->sortByCell();
-        demBench::setGas(*fresh, bedTop, lift);
-        fresh->advance(dtCfd);
-    }
-    fresh->save(path);
-    sim->load(path);
-    return sim;
+    return demBench::cached(path, demBench::slabSettings(threads), [] {
+        // From the settled slab, made as BM_SlabBed does.
+        auto fresh = demBench::cached(demBench::settledSlabPath(), demBench::slabSettings(2), [] {
+            auto slab = std::make_unique<dem::Simulation>(demBench::slabSettings(1));
+            slab->packRandom({1500, 500}, {0.0, 0.05, 0.0, 0.06}, 2012);
+            slab->settle(0.5, 1e-12);
+            return slab;
+        });
+        const long steps = std::lround(warmUp / dtCfd);
+        for (long k = 0; k < steps; ++k) {
+            if (k % sortEvery == 0) fresh->sortByCell();
+            demBench::setGas(*fresh, bedTop, lift);
+            fresh->advance(dtCfd);
+        }
+        return fresh;
+    });
 }
 
 /// Argument: threads. 500 CFD steps (0.05 s) from the cached fluidized state; the

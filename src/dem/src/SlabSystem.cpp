@@ -10,8 +10,6 @@
 #include <cmath>
 #include <cstddef>
 
-#include <omp.h>
-
 namespace dem {
 
 namespace {
@@ -30,6 +28,31 @@ const Settings& validatedSlab(const Settings& s)
 }
 
 constexpr double skinStartFraction = 0.4;   // of d_min, the adaptive skin's start, as System's
+
+/// Plain pointers to the slab's per-particle arrays, taken once before a loop: the pair
+/// loop reads them without re-loading through the vectors, and the simd loops need no
+/// alias checks.
+struct Arrays {
+    double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *fx, *fy, *fz, *tx, *ty, *tz,
+        *radius, *invMass, *invInertia, *dragK, *gasVx, *gasVy, *gasVz, *extraFx,
+        *extraFy, *extraFz, *fluidX, *fluidY, *fluidZ, *meanVx, *meanVy, *meanVz, *xRef,
+        *yRef, *zRef;
+
+    explicit Arrays(SlabParticles& p)
+        : x(p.x.data()), y(p.y.data()), z(p.z.data()), vx(p.vx.data()), vy(p.vy.data()),
+          vz(p.vz.data()), wx(p.wx.data()), wy(p.wy.data()), wz(p.wz.data()),
+          fx(p.fx.data()), fy(p.fy.data()), fz(p.fz.data()), tx(p.tx.data()),
+          ty(p.ty.data()), tz(p.tz.data()), radius(p.radius.data()),
+          invMass(p.invMass.data()), invInertia(p.invInertia.data()),
+          dragK(p.dragCoefficient.data()), gasVx(p.gasVx.data()), gasVy(p.gasVy.data()),
+          gasVz(p.gasVz.data()), extraFx(p.extraFx.data()), extraFy(p.extraFy.data()),
+          extraFz(p.extraFz.data()), fluidX(p.fluidX.data()), fluidY(p.fluidY.data()),
+          fluidZ(p.fluidZ.data()), meanVx(p.meanVx.data()), meanVy(p.meanVy.data()),
+          meanVz(p.meanVz.data()), xRef(p.xRef.data()), yRef(p.yRef.data()),
+          zRef(p.zRef.data())
+    {
+    }
+};
 
 } // namespace
 
@@ -128,49 +151,36 @@ void SlabSystem::computePairForces(double historyDt)
     const int* law = pairs_.law.data();
     const int* groupStart = pairs_.groupStart.data();
     Vec3* xiT = pairs_.xi.data();
-    const double* x = p.x.data();
-    const double* y = p.y.data();
-    const double* z = p.z.data();
-    const double* vx = p.vx.data();
-    const double* vy = p.vy.data();
-    const double* vz = p.vz.data();
-    const double* wx = p.wx.data();
-    const double* wy = p.wy.data();
-    const double* wz = p.wz.data();
-    const double* r = p.radius.data();
     const ContactLaw* laws = pairLaws_.data();
-    // Sums over each particle's pairs; the t* hold the sum of nHat x Ft until
-    // addWallForcesAndKick multiplies it by the radius (the torque on either partner is
-    // r nHat x Ft, see contactForce).
-    double* sumFx = p.fx.data();
-    double* sumFy = p.fy.data();
-    double* sumFz = p.fz.data();
-    double* sumTx = p.tx.data();
-    double* sumTy = p.ty.data();
-    double* sumTz = p.tz.data();
+    // Sums over each particle's pairs in a.f* and a.t*; the t* hold the sum of nHat x Ft
+    // until addWallForcesAndKick multiplies it by the radius (the torque on either partner
+    // is r nHat x Ft, see contactForce).
+    const Arrays a(p);
 
     // A touching pair (found by the group's first pass)
     auto pairForce = [&](Index k, std::size_t& touching, double& maxOverlap) {
         const int i = pi[k];
         const int j = pj[k];
-        const Vec3 d(x[j] - x[i], y[j] - y[i], z[j] - z[i]);
+        const Vec3 d(a.x[j] - a.x[i], a.y[j] - a.y[i], a.z[j] - a.z[i]);
         const double dist = std::sqrt(d.x() * d.x() + d.y() * d.y() + d.z() * d.z());
         PairGeometry3 g;
-        g.overlap = r[i] + r[j] - dist;
+        g.overlap = a.radius[i] + a.radius[j] - dist;
         g.nHat = d / dist;
-        g.rI = r[i];
-        g.rJ = r[j];
+        g.rI = a.radius[i];
+        g.rJ = a.radius[j];
         // Contact points: v_i + w_i x (r_i n) and v_j + w_j x (-r_j n).
-        g.vRel = Vec3(vx[i] - vx[j], vy[i] - vy[j], vz[i] - vz[j])
-                 + (g.rI * Vec3(wx[i], wy[i], wz[i]) + g.rJ * Vec3(wx[j], wy[j], wz[j])).cross(g.nHat);
+        const Vec3 wI(a.wx[i], a.wy[i], a.wz[i]);
+        const Vec3 wJ(a.wx[j], a.wy[j], a.wz[j]);
+        g.vRel = Vec3(a.vx[i] - a.vx[j], a.vy[i] - a.vy[j], a.vz[i] - a.vz[j])
+                 + (g.rI * wI + g.rJ * wJ).cross(g.nHat);
         g.xiT = xiT[k];
         const PairForce3 f = contactForce(g, laws[law[k]], historyDt);
         xiT[k] = f.xiT;
         const Vec3 nxF = g.nHat.cross(f.ft);
-        sumFx[i] += f.force.x(); sumFy[i] += f.force.y(); sumFz[i] += f.force.z();
-        sumFx[j] -= f.force.x(); sumFy[j] -= f.force.y(); sumFz[j] -= f.force.z();
-        sumTx[i] += nxF.x(); sumTy[i] += nxF.y(); sumTz[i] += nxF.z();
-        sumTx[j] += nxF.x(); sumTy[j] += nxF.y(); sumTz[j] += nxF.z();
+        a.fx[i] += f.force.x(); a.fy[i] += f.force.y(); a.fz[i] += f.force.z();
+        a.fx[j] -= f.force.x(); a.fy[j] -= f.force.y(); a.fz[j] -= f.force.z();
+        a.tx[i] += nxF.x(); a.ty[i] += nxF.y(); a.tz[i] += nxF.z();
+        a.tx[j] += nxF.x(); a.ty[j] += nxF.y(); a.tz[j] += nxF.z();
         ++touching;
         maxOverlap = std::max(maxOverlap, g.overlap);
     };
@@ -185,10 +195,10 @@ void SlabSystem::computePairForces(double historyDt)
         for (int k = groupStart[gr]; k < groupStart[gr + 1]; ++k) {
             const int i = pi[k];
             const int j = pj[k];
-            const double dx = x[j] - x[i];
-            const double dy = y[j] - y[i];
-            const double dz = z[j] - z[i];
-            const double rSum = r[i] + r[j];
+            const double dx = a.x[j] - a.x[i];
+            const double dy = a.y[j] - a.y[i];
+            const double dz = a.z[j] - a.z[i];
+            const double rSum = a.radius[i] + a.radius[j];
             const bool touch = !(dx * dx + dy * dy + dz * dz >= rSum * rSum);   // NaN: touching
             picked[m] = k;
             m += touch;
@@ -200,8 +210,8 @@ void SlabSystem::computePairForces(double historyDt)
         for (int q = 0; q < m; ++q) pairForce(picked[q], touching, maxOverlap);
     };
     auto zeroBlock = [&](std::size_t first, std::size_t last) {
-        for (double* a : {sumFx, sumFy, sumFz, sumTx, sumTy, sumTz}) {
-            std::fill(a + first, a + last, 0.0);
+        for (double* sum : {a.fx, a.fy, a.fz, a.tx, a.ty, a.tz}) {
+            std::fill(sum + first, sum + last, 0.0);
         }
     };
     sumPairGroups(settings_.nThreads, n, zeroBlock, group, contactCount_, maxOverlap_);
@@ -227,10 +237,7 @@ void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
         // As System's: each thread its own range of particles for both loops; the few
         // particles with wall candidates first (their wall forces added to the pair sums in
         // wall order, their torque made whole), then every particle's kick, vectorised.
-        const Index nThreads = omp_get_num_threads();
-        const Index thread = omp_get_thread_num();
-        const Index first = n * thread / nThreads;
-        const Index last = n * (thread + 1) / nThreads;
+        const auto [first, last] = threadShare(n);
         for (Index i = first; i < last; ++i) {
             if (wStart[i] == wStart[i + 1]) continue;
             const double ri = p.radius[i];
@@ -278,80 +285,55 @@ void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
 template <bool Kick, bool Fluid>
 void SlabSystem::kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, double weight)
 {
-    SlabParticles& p = p_;
+    const Arrays a(p_);
     const int* wStart = wallContacts_.start.data();
     const double gx = settings_.gravity[0];
     const double gy = settings_.gravity[1];
-    const double* fx = p.fx.data();
-    const double* fy = p.fy.data();
-    const double* fz = p.fz.data();
-    double* tx = p.tx.data();
-    double* ty = p.ty.data();
-    double* tz = p.tz.data();
-    const double* radius = p.radius.data();
-    const double* invMass = p.invMass.data();
-    const double* invInertia = p.invInertia.data();
-    const double* dragK = p.dragCoefficient.data();
-    const double* gasVx = p.gasVx.data();
-    const double* gasVy = p.gasVy.data();
-    const double* gasVz = p.gasVz.data();
-    const double* extraFx = p.extraFx.data();
-    const double* extraFy = p.extraFy.data();
-    const double* extraFz = p.extraFz.data();
-    double* vx = p.vx.data();
-    double* vy = p.vy.data();
-    double* vz = p.vz.data();
-    double* wx = p.wx.data();
-    double* wy = p.wy.data();
-    double* wz = p.wz.data();
-    double* fluidX = p.fluidX.data();
-    double* fluidY = p.fluidY.data();
-    double* fluidZ = p.fluidZ.data();
-    double* meanVx = p.meanVx.data();
-    double* meanVy = p.meanVy.data();
-    double* meanVz = p.meanVz.data();
 #pragma omp simd
     for (Index i = first; i < last; ++i) {
         // Particles with walls have their whole torque already (the loop before): a factor
         // of 1 keeps it exactly, and a select of loaded values vectorises.
-        const double ri = radius[i];
+        const double ri = a.radius[i];
         const double scale = wStart[i] == wStart[i + 1] ? ri : 1.0;
-        const double txi = scale * tx[i];
-        const double tyi = scale * ty[i];
-        const double tzi = scale * tz[i];
-        tx[i] = txi;
-        ty[i] = tyi;
-        tz[i] = tzi;
+        const double txi = scale * a.tx[i];
+        const double tyi = scale * a.ty[i];
+        const double tzi = scale * a.tz[i];
+        a.tx[i] = txi;
+        a.ty[i] = tyi;
+        a.tz[i] = tzi;
         if constexpr (Kick) {
-            const double invM = invMass[i];
+            const double invM = a.invMass[i];
             if constexpr (Fluid) {
                 // Second half-kick with the drag implicit, as System.
-                const double K = dragK[i];
+                const double K = a.dragK[i];
                 const double denominator = 1.0 + h * K * invM;
-                const double vxNew = (vx[i] + h * ((fx[i] + K * gasVx[i] + extraFx[i]) * invM + gx))
-                                     / denominator;
-                const double vyNew = (vy[i] + h * ((fy[i] + K * gasVy[i] + extraFy[i]) * invM + gy))
-                                     / denominator;
-                const double vzNew = (vz[i] + h * ((fz[i] + K * gasVz[i] + extraFz[i]) * invM))
-                                     / denominator;
-                vx[i] = vxNew;
-                vy[i] = vyNew;
-                vz[i] = vzNew;
-                fluidX[i] = K * (gasVx[i] - vxNew) + extraFx[i];
-                fluidY[i] = K * (gasVy[i] - vyNew) + extraFy[i];
-                fluidZ[i] = K * (gasVz[i] - vzNew) + extraFz[i];
-                meanVx[i] += weight * vxNew;
-                meanVy[i] += weight * vyNew;
-                meanVz[i] += weight * vzNew;
+                const double vxNew =
+                    (a.vx[i] + h * ((a.fx[i] + K * a.gasVx[i] + a.extraFx[i]) * invM + gx))
+                    / denominator;
+                const double vyNew =
+                    (a.vy[i] + h * ((a.fy[i] + K * a.gasVy[i] + a.extraFy[i]) * invM + gy))
+                    / denominator;
+                const double vzNew =
+                    (a.vz[i] + h * ((a.fz[i] + K * a.gasVz[i] + a.extraFz[i]) * invM))
+                    / denominator;
+                a.vx[i] = vxNew;
+                a.vy[i] = vyNew;
+                a.vz[i] = vzNew;
+                a.fluidX[i] = K * (a.gasVx[i] - vxNew) + a.extraFx[i];
+                a.fluidY[i] = K * (a.gasVy[i] - vyNew) + a.extraFy[i];
+                a.fluidZ[i] = K * (a.gasVz[i] - vzNew) + a.extraFz[i];
+                a.meanVx[i] += weight * vxNew;
+                a.meanVy[i] += weight * vyNew;
+                a.meanVz[i] += weight * vzNew;
             } else {
-                vx[i] += h * (fx[i] * invM + gx);
-                vy[i] += h * (fy[i] * invM + gy);
-                vz[i] += h * (fz[i] * invM);
+                a.vx[i] += h * (a.fx[i] * invM + gx);
+                a.vy[i] += h * (a.fy[i] * invM + gy);
+                a.vz[i] += h * (a.fz[i] * invM);
             }
-            const double hI = h * invInertia[i];
-            wx[i] += hI * txi;
-            wy[i] += hI * tyi;
-            wz[i] += hI * tzi;
+            const double hI = h * a.invInertia[i];
+            a.wx[i] += hI * txi;
+            a.wy[i] += hI * tyi;
+            a.wz[i] += hI * tzi;
         }
     }
 }
@@ -373,55 +355,31 @@ double SlabSystem::drift()
     const double gy = settings_.gravity[1];
     const Box& b = settings_.box;
     const double depth = settings_.slabDepth;
-    SlabParticles& p = p_;
-    // Plain pointers: a simd loop, which needs no alias checks.
-    double* x = p.x.data();
-    double* y = p.y.data();
-    double* z = p.z.data();
-    double* vx = p.vx.data();
-    double* vy = p.vy.data();
-    double* vz = p.vz.data();
-    double* wx = p.wx.data();
-    double* wy = p.wy.data();
-    double* wz = p.wz.data();
-    const double* fx = p.fx.data();
-    const double* fy = p.fy.data();
-    const double* fz = p.fz.data();
-    const double* tx = p.tx.data();
-    const double* ty = p.ty.data();
-    const double* tz = p.tz.data();
-    const double* fluidX = p.fluidX.data();
-    const double* fluidY = p.fluidY.data();
-    const double* fluidZ = p.fluidZ.data();
-    const double* xRef = p.xRef.data();
-    const double* yRef = p.yRef.data();
-    const double* zRef = p.zRef.data();
-    const double* invMass = p.invMass.data();
-    const double* invInertia = p.invInertia.data();
+    const Arrays a(p_);
 
     double maxDisplacement2 = 0.0;
     int lost = 0;
 #pragma omp parallel for simd num_threads(settings_.nThreads) schedule(static) \
     reduction(max : maxDisplacement2) reduction(| : lost)
     for (Index i = 0; i < n; ++i) {
-        const double invM = invMass[i];
-        const double hI = h * invInertia[i];
-        vx[i] += h * ((fx[i] + fluidX[i]) * invM + gx);
-        vy[i] += h * ((fy[i] + fluidY[i]) * invM + gy);
-        vz[i] += h * ((fz[i] + fluidZ[i]) * invM);
-        wx[i] += hI * tx[i];
-        wy[i] += hI * ty[i];
-        wz[i] += hI * tz[i];
-        x[i] += dt * vx[i];
-        y[i] += dt * vy[i];
-        z[i] += dt * vz[i];
-        const double dx = x[i] - xRef[i];
-        const double dy = y[i] - yRef[i];
-        const double dz = z[i] - zRef[i];
+        const double invM = a.invMass[i];
+        const double hI = h * a.invInertia[i];
+        a.vx[i] += h * ((a.fx[i] + a.fluidX[i]) * invM + gx);
+        a.vy[i] += h * ((a.fy[i] + a.fluidY[i]) * invM + gy);
+        a.vz[i] += h * ((a.fz[i] + a.fluidZ[i]) * invM);
+        a.wx[i] += hI * a.tx[i];
+        a.wy[i] += hI * a.ty[i];
+        a.wz[i] += hI * a.tz[i];
+        a.x[i] += dt * a.vx[i];
+        a.y[i] += dt * a.vy[i];
+        a.z[i] += dt * a.vz[i];
+        const double dx = a.x[i] - a.xRef[i];
+        const double dy = a.y[i] - a.yRef[i];
+        const double dz = a.z[i] - a.zRef[i];
         maxDisplacement2 = std::max(maxDisplacement2, dx * dx + dy * dy + dz * dz);
         // Written so that NaN counts as lost too (as inside()).
-        lost |= !(x[i] >= b.xMin && x[i] <= b.xMax && y[i] >= b.yMin && y[i] <= b.yMax
-                  && z[i] >= 0.0 && z[i] <= depth);
+        lost |= !(a.x[i] >= b.xMin && a.x[i] <= b.xMax && a.y[i] >= b.yMin && a.y[i] <= b.yMax
+                  && a.z[i] >= 0.0 && a.z[i] <= depth);
     }
     if (lost) throwLostParticle();
     return maxDisplacement2;
