@@ -8,6 +8,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include <cstdlib>
@@ -26,28 +27,85 @@ inline dem::Settings bedSettings(int threads)
     return s;
 }
 
+/// The slab of BM_SlabBed and BM_FluidizedSlab: binary spheres in a slab 0.05 m wide and
+/// 15 mm deep (Goldschmidt's depth, 6 large diameters), dt = 1e-5 s.
+inline dem::Settings slabSettings(int threads)
+{
+    dem::Settings s;
+    s.classes = {{"small", 1.5e-3, 2525.0}, {"large", 2.5e-3, 2525.0}};
+    s.box = {0.0, 0.05, 0.0, 0.3};
+    s.dimension = 3;
+    s.slabDepth = 0.015;
+    s.dt = 1e-5;
+    s.nThreads = threads;
+    return s;
+}
+
+/// The settled slab's cache, $DEM_BENCH_SLAB_STATE (default /tmp/demBench-slabBed.state).
+inline std::string settledSlabPath()
+{
+    const char* env = std::getenv("DEM_BENCH_SLAB_STATE");
+    return env ? env : "/tmp/demBench-slabBed.state";
+}
+
 inline std::string settledStatePath()
 {
     const char* env = std::getenv("DEM_BENCH_STATE");
     return env ? env : "/tmp/demBench-settledBed.state";
 }
 
+/// The state cached at `path`, loaded with `settings`; without a usable cache, make()'s
+/// simulation saved there first.
+template <class Make>
+std::unique_ptr<dem::Simulation> cached(const std::string& path, const dem::Settings& settings,
+                                        Make&& make)
+{
+    auto sim = std::make_unique<dem::Simulation>(settings);
+    try {
+        sim->load(path);
+        return sim;
+    } catch (const dem::Error&) {
+        // No usable cache: make it.
+    }
+    make()->save(path);
+    sim->load(path);
+    return sim;
+}
+
 /// The settled bed, from the cache or packed and settled anew (about 1 min).
 inline std::unique_ptr<dem::Simulation> settledBed(int threads)
 {
-    auto sim = std::make_unique<dem::Simulation>(bedSettings(threads));
-    try {
-        sim->load(settledStatePath());
-        return sim;
-    } catch (const dem::Error&) {
-        // No usable cache: make the bed as the paper does.
+    return cached(settledStatePath(), bedSettings(threads), [] {
+        auto fresh = std::make_unique<dem::Simulation>(bedSettings(2));
+        fresh->packRandom({6610, 1440}, {0.0, 0.15, 0.0, 0.35}, 2012);
+        fresh->settle(1.5, 1e-12);   // as the SettledBed test: at rest after ~0.9 s
+        return fresh;
+    });
+}
+
+/// The fluidized beds' drag inputs for the CFD step starting at sim.time(): K = m g/u
+/// (u = 0.5 m/s) towards a gas velocity
+///   u_y = lift u (1 + A (cos(2 pi x/W) cos(2 pi f t) + cos(4 pi x/W) sin(2 pi f t)))
+/// below y = top, half of that above, A = 0.5, f = 2 Hz (lift = 1: the drag holds the
+/// weight on average).
+inline void setGas(dem::Simulation& sim, double top, double lift = 1.0)
+{
+    constexpr double pi = 3.14159265358979323846;
+    const double u = 0.5, a = 0.5, f = 2.0;
+    const double width = sim.settings().box.xMax - sim.settings().box.xMin;
+    const double wt = 2.0 * pi * f * sim.time();
+    const double c = std::cos(wt), s = std::sin(wt);
+    const std::size_t n = sim.size();
+    const double* x = sim.x();
+    const double* y = sim.y();
+    const double* m = sim.mass();
+    double* K = sim.dragCoefficient();
+    double* uy = sim.gasVelocityY();
+    for (std::size_t i = 0; i < n; ++i) {
+        const double k = 2.0 * pi * x[i] / width;
+        K[i] = m[i] * 9.81 / u;
+        uy[i] = (y[i] < top ? lift * u : 0.5 * lift * u) * (1.0 + a * (std::cos(k) * c + std::cos(2.0 * k) * s));
     }
-    auto fresh = std::make_unique<dem::Simulation>(bedSettings(2));
-    fresh->packRandom({6610, 1440}, {0.0, 0.15, 0.0, 0.35}, 2012);
-    fresh->settle(1.5, 1e-12);   // as the SettledBed test: at rest after ~0.9 s
-    fresh->save(settledStatePath());
-    sim->load(settledStatePath());
-    return sim;
 }
 
 /// The counters every bed reports: particle-steps per second and DEM steps per list build

@@ -16,59 +16,31 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <cmath>
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 constexpr double dtCfd = 1e-4;        // the solver's CFD step: 10 DEM steps
 constexpr long sortEvery = 20;        // CFD steps between sortByCell, as the solver
 constexpr double warmUp = 0.3;        // s of forcing from the settled bed
-
-/// Sets the drag inputs for the CFD step starting at sim.time().
-void setGas(dem::Simulation& sim)
-{
-    const double u = 0.5, a = 0.5, f = 2.0, top = 0.2;
-    const double width = sim.settings().box.xMax - sim.settings().box.xMin;
-    const double wt = 2.0 * pi * f * sim.time();
-    const double c = std::cos(wt), s = std::sin(wt);
-    const std::size_t n = sim.size();
-    const double* x = sim.x();
-    const double* y = sim.y();
-    const double* m = sim.mass();
-    double* K = sim.dragCoefficient();
-    double* uy = sim.gasVelocityY();
-    for (std::size_t i = 0; i < n; ++i) {
-        const double k = 2.0 * pi * x[i] / width;
-        K[i] = m[i] * 9.81 / u;
-        uy[i] = (y[i] < top ? u : 0.5 * u) * (1.0 + a * (std::cos(k) * c + std::cos(2.0 * k) * s));
-    }
-}
+constexpr double bedTop = 0.2;        // m, H above
 
 /// One CFD step as the solver does it: renumber now and then, set the inputs, advance.
 void cfdStep(dem::Simulation& sim, long cfdStepIndex)
 {
     if (cfdStepIndex % sortEvery == 0) sim.sortByCell();
-    setGas(sim);
+    demBench::setGas(sim, bedTop);
     sim.advance(dtCfd);
 }
 
 std::unique_ptr<dem::Simulation> fluidizedBed(int threads)
 {
     const std::string path = demBench::settledStatePath() + ".fluidized";
-    auto sim = std::make_unique<dem::Simulation>(demBench::bedSettings(threads));
-    try {
-        sim->load(path);
-        return sim;
-    } catch (const dem::Error&) {
-        // No usable cache: fluidize the settled bed.
-    }
-    auto fresh = demBench::settledBed(2);
-    const long steps = std::lround(warmUp / dtCfd);
-    for (long k = 0; k < steps; ++k) cfdStep(*fresh, k);
-    fresh->save(path);
-    sim->load(path);
-    return sim;
+    return demBench::cached(path, demBench::bedSettings(threads), [] {
+        auto fresh = demBench::settledBed(2);
+        const long steps = std::lround(warmUp / dtCfd);
+        for (long k = 0; k < steps; ++k) cfdStep(*fresh, k);
+        return fresh;
+    });
 }
 
 /// Argument: threads. 500 CFD steps (0.05 s) from the cached fluidized state; the
@@ -85,7 +57,7 @@ void BM_FluidizedBed(benchmark::State& state)
     for (auto _ : state) {
         state.PauseTiming();
         if (k % sortEvery == 0) sim->sortByCell();
-        setGas(*sim);
+        demBench::setGas(*sim, bedTop);
         state.ResumeTiming();
         sim->advance(dtCfd);
         contacts += sim->contactCount();

@@ -4,33 +4,22 @@
 // BM_SettledBed's discs. The bed is packed and settled once and cached in
 // $DEM_BENCH_SLAB_STATE (default /tmp/demBench-slabBed.state).
 
+#include "BenchBeds.hpp"
 #include "dem/SlabSystem.hpp"
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <memory>
 #include <string>
 
 namespace {
 
-dem::Settings slabSettings(int threads)
-{
-    dem::Settings s;
-    s.classes = {{"small", 1.5e-3, 2525.0}, {"large", 2.5e-3, 2525.0}};
-    s.box = {0.0, 0.05, 0.0, 0.3};
-    s.dimension = 3;
-    s.slabDepth = 0.015;
-    s.dt = 1e-5;
-    s.nThreads = threads;
-    return s;
-}
+using demBench::slabSettings;
 
 std::unique_ptr<dem::SlabSystem> settledSlab(int threads)
 {
-    const char* env = std::getenv("DEM_BENCH_SLAB_STATE");
-    const std::string path = env ? env : "/tmp/demBench-slabBed.state";
+    const std::string path = demBench::settledSlabPath();
     auto sim = std::make_unique<dem::SlabSystem>(slabSettings(threads));
     try {
         sim->load(path);

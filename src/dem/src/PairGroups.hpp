@@ -5,8 +5,20 @@
 #include "dem/ContactList.hpp"
 
 #include <cstddef>
+#include <utility>
+
+#include <omp.h>
 
 namespace dem {
+
+/// The calling thread's share [first, last) of n particles in an OpenMP parallel region:
+/// the same for every loop of the region, so the loops need no barrier between them.
+inline std::pair<std::ptrdiff_t, std::ptrdiff_t> threadShare(std::ptrdiff_t n)
+{
+    const std::ptrdiff_t nThreads = omp_get_num_threads();
+    const std::ptrdiff_t thread = omp_get_thread_num();
+    return {n * thread / nThreads, n * (thread + 1) / nThreads};
+}
 
 /// Runs group(g, touching, maxOverlap) over every pair group: the blocks (each after
 /// zeroBlock(first, last) of its particles' sums, by the thread that sums them and kicks

@@ -109,9 +109,11 @@ void Simulation::advance(double dtOuter)
 }
 void Simulation::sortByCell()
 {
-    // The slab engine never renumbers: its tangential histories (3-vectors, odd under a swap
-    // of i and j) stay with their pairs as they are.
-    if (!slab_) system_->sortByCell();
+    if (slab_) {
+        slab_->sortByCell();
+        return;
+    }
+    system_->sortByCell();
 }
 
 const double* Simulation::meanVelocityX() const { return DEM_ARRAY(meanVx, meanVx); }

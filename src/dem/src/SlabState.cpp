@@ -3,7 +3,9 @@
 // histories, the wall contacts, the reference positions), so a restart continues bit for
 // bit. A file of its own kind: a 2D state and a slab state cannot be mistaken for each other.
 // Since version 2 it holds the recipe of a packed bed, so that a case starting from it
-// checks every entry of how it was made (version 1: the counts per class only).
+// checks every entry of how it was made (version 1: the counts per class only), and since
+// version 3 the skin and the step of the last list build (the adaptive skin's state; before,
+// the skin was fixed at 0.1 d_min or Settings::neighbourSkin).
 
 #include "dem/Random.hpp"
 #include "dem/SlabSystem.hpp"
@@ -25,8 +27,10 @@ namespace dem {
 namespace {
 
 constexpr char slabMagic[16] = "dpmFoam2D-slab\n";
-constexpr std::uint32_t slabVersion = 2;
+constexpr std::uint32_t slabVersion = 3;
+constexpr std::uint32_t slabVersionFixedSkin = 2;   // no skin, no step of the last build
 constexpr std::uint32_t slabVersionNoRecipe = 1;
+constexpr double fixedSkinFraction = 0.1;           // of d_min, the skin before version 3
 
 std::vector<double> slabKey(const Settings& s)
 {
@@ -160,6 +164,8 @@ void SlabSystem::save(const std::string& path) const
         }
         value(stepCount_);
         value(listBuilds_);
+        value(skin_);
+        value(lastBuildStep_);
         std::vector<double> wallData;
         for (const PlaneWall3& w : walls_) {
             wallData.insert(wallData.end(), {w.point.x(), w.point.y(), w.point.z(),
@@ -209,9 +215,9 @@ void SlabSystem::load(const std::string& path)
     if (std::memcmp(head, slabMagic, sizeof(slabMagic)) != 0) fail("wrong file type");
     std::uint32_t version = 0;
     value(version);
-    if (version != slabVersion && version != slabVersionNoRecipe) {
+    if (version < slabVersionNoRecipe || version > slabVersion) {
         fail("version " + std::to_string(version) + ", expected "
-             + std::to_string(slabVersionNoRecipe) + " or " + std::to_string(slabVersion));
+             + std::to_string(slabVersionNoRecipe) + " to " + std::to_string(slabVersion));
     }
     std::vector<double> key;
     array(key);
@@ -241,6 +247,21 @@ void SlabSystem::load(const std::string& path)
     }
     value(t.stepCount_);
     value(t.listBuilds_);
+    double fileSkin = settings_.neighbourSkin >= 0.0 ? settings_.neighbourSkin
+                                                     : fixedSkinFraction * t.smallestDiameter_;
+    t.lastBuildStep_ = t.stepCount_;   // before version 3 the adaptive skin's clock starts here
+    if (version > slabVersionFixedSkin) {
+        value(fileSkin);
+        value(t.lastBuildStep_);
+        if (!(fileSkin > 0.0) || t.lastBuildStep_ < -1 || t.lastBuildStep_ > t.stepCount_) {
+            fail("a skin of " + formatValue(fileSkin) + " m built at step "
+                 + std::to_string(t.lastBuildStep_));
+        }
+    }
+    // An adaptive skin continues from the file's (within its bounds); a fixed one stays,
+    // and a list of another skin is built anew.
+    if (t.adaptiveSkin_) t.setSkin(std::clamp(fileSkin, t.skinMin_, t.skinMax_));
+    const bool sameSkin = fileSkin == t.skin_;
     std::vector<double> wallData;
     array(wallData);
     if (wallData.size() % 6 != 0 || wallData.size() < 36) fail("a bad wall list");
@@ -280,7 +301,7 @@ void SlabSystem::load(const std::string& path)
                                        && t.pairs_.groupStart.back() == static_cast<int>(np)
                                        && t.wallContacts_.start.back() == static_cast<int>(nw)));
     if (!listOk) fail("a bad contact list");
-    t.listValid_ = ready != 0;
+    t.listValid_ = ready != 0 && sameSkin;
     t.forcesValid_ = ready != 0;
     *this = std::move(t);
 }

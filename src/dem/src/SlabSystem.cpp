@@ -27,7 +27,32 @@ const Settings& validatedSlab(const Settings& s)
     return s;
 }
 
-constexpr double skinFraction = 0.1;   // of d_min, the skin unless Settings::neighbourSkin >= 0
+constexpr double skinStartFraction = 0.4;   // of d_min, the adaptive skin's start, as System's
+
+/// Plain pointers to the slab's per-particle arrays, taken once before a loop: the pair
+/// loop reads them without re-loading through the vectors, and the simd loops need no
+/// alias checks.
+struct Arrays {
+    double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *fx, *fy, *fz, *tx, *ty, *tz,
+        *radius, *invMass, *invInertia, *dragK, *gasVx, *gasVy, *gasVz, *extraFx,
+        *extraFy, *extraFz, *fluidX, *fluidY, *fluidZ, *meanVx, *meanVy, *meanVz, *xRef,
+        *yRef, *zRef;
+
+    explicit Arrays(SlabParticles& p)
+        : x(p.x.data()), y(p.y.data()), z(p.z.data()), vx(p.vx.data()), vy(p.vy.data()),
+          vz(p.vz.data()), wx(p.wx.data()), wy(p.wy.data()), wz(p.wz.data()),
+          fx(p.fx.data()), fy(p.fy.data()), fz(p.fz.data()), tx(p.tx.data()),
+          ty(p.ty.data()), tz(p.tz.data()), radius(p.radius.data()),
+          invMass(p.invMass.data()), invInertia(p.invInertia.data()),
+          dragK(p.dragCoefficient.data()), gasVx(p.gasVx.data()), gasVy(p.gasVy.data()),
+          gasVz(p.gasVz.data()), extraFx(p.extraFx.data()), extraFy(p.extraFy.data()),
+          extraFz(p.extraFz.data()), fluidX(p.fluidX.data()), fluidY(p.fluidY.data()),
+          fluidZ(p.fluidZ.data()), meanVx(p.meanVx.data()), meanVy(p.meanVy.data()),
+          meanVz(p.meanVz.data()), xRef(p.xRef.data()), yRef(p.yRef.data()),
+          zRef(p.zRef.data())
+    {
+    }
+};
 
 } // namespace
 
@@ -73,7 +98,7 @@ void SlabParticles::append(int cls, double diam, double density, const Vec3& pos
 
 SlabSystem::SlabSystem(const Settings& settings)
     : EngineBase(validatedSlab(settings), slabWalls(settings.box, settings.slabDepth),
-                 skinFraction, false)
+                 skinStartFraction, settings.neighbourSkin < 0.0)
 {
 }
 
@@ -121,46 +146,72 @@ void SlabSystem::computePairForces(double historyDt)
 {
     SlabParticles& p = p_;
     const std::size_t n = p.size();
-    const ContactLaw* laws = pairLaws_.data();
+    const int* pi = pairs_.i.data();
+    const int* pj = pairs_.j.data();
+    const int* law = pairs_.law.data();
     const int* groupStart = pairs_.groupStart.data();
-    // Sums over each particle's pairs; p.t* hold the sum of nHat x Ft until
-    // addWallForcesAndKick multiplies it by the radius (the torque on either partner is
-    // r nHat x Ft, see contactForce).
+    Vec3* xiT = pairs_.xi.data();
+    const ContactLaw* laws = pairLaws_.data();
+    // Sums over each particle's pairs in a.f* and a.t*; the t* hold the sum of nHat x Ft
+    // until addWallForcesAndKick multiplies it by the radius (the torque on either partner
+    // is r nHat x Ft, see contactForce).
+    const Arrays a(p);
+
+    // A touching pair (found by the group's first pass)
     auto pairForce = [&](Index k, std::size_t& touching, double& maxOverlap) {
-        const int i = pairs_.i[k];
-        const int j = pairs_.j[k];
-        const Vec3 d(p.x[j] - p.x[i], p.y[j] - p.y[i], p.z[j] - p.z[i]);
-        const double d2 = d.squaredNorm();
-        const double rSum = p.radius[i] + p.radius[j];
-        if (d2 >= rSum * rSum) {
-            pairs_.xi[k].setZero();   // separated: the contact's history ends
-            return;
-        }
-        const double dist = std::sqrt(d2);
+        const int i = pi[k];
+        const int j = pj[k];
+        const Vec3 d(a.x[j] - a.x[i], a.y[j] - a.y[i], a.z[j] - a.z[i]);
+        const double dist = std::sqrt(d.x() * d.x() + d.y() * d.y() + d.z() * d.z());
         PairGeometry3 g;
-        g.overlap = rSum - dist;
+        g.overlap = a.radius[i] + a.radius[j] - dist;
         g.nHat = d / dist;
-        g.rI = p.radius[i];
-        g.rJ = p.radius[j];
+        g.rI = a.radius[i];
+        g.rJ = a.radius[j];
         // Contact points: v_i + w_i x (r_i n) and v_j + w_j x (-r_j n).
-        g.vRel = p.velocity(i) - p.velocity(j) + (g.rI * p.spin(i) + g.rJ * p.spin(j)).cross(g.nHat);
-        g.xiT = pairs_.xi[k];
-        const PairForce3 f = contactForce(g, laws[pairs_.law[k]], historyDt);
-        pairs_.xi[k] = f.xiT;
+        const Vec3 wI(a.wx[i], a.wy[i], a.wz[i]);
+        const Vec3 wJ(a.wx[j], a.wy[j], a.wz[j]);
+        g.vRel = Vec3(a.vx[i] - a.vx[j], a.vy[i] - a.vy[j], a.vz[i] - a.vz[j])
+                 + (g.rI * wI + g.rJ * wJ).cross(g.nHat);
+        g.xiT = xiT[k];
+        const PairForce3 f = contactForce(g, laws[law[k]], historyDt);
+        xiT[k] = f.xiT;
         const Vec3 nxF = g.nHat.cross(f.ft);
-        p.fx[i] += f.force.x(); p.fy[i] += f.force.y(); p.fz[i] += f.force.z();
-        p.fx[j] -= f.force.x(); p.fy[j] -= f.force.y(); p.fz[j] -= f.force.z();
-        p.tx[i] += nxF.x(); p.ty[i] += nxF.y(); p.tz[i] += nxF.z();
-        p.tx[j] += nxF.x(); p.ty[j] += nxF.y(); p.tz[j] += nxF.z();
+        a.fx[i] += f.force.x(); a.fy[i] += f.force.y(); a.fz[i] += f.force.z();
+        a.fx[j] -= f.force.x(); a.fy[j] -= f.force.y(); a.fz[j] -= f.force.z();
+        a.tx[i] += nxF.x(); a.ty[i] += nxF.y(); a.tz[i] += nxF.z();
+        a.tx[j] += nxF.x(); a.ty[j] += nxF.y(); a.tz[j] += nxF.z();
         ++touching;
         maxOverlap = std::max(maxOverlap, g.overlap);
     };
+
+    // The groups as sumPairGroups runs them, in two passes as System's: the touching pairs
+    // picked out without a branch, then their forces in list order.
+    touchingScratch_.resize(pairs_.size());   // (a loaded state's list has no build here)
+    int* touchingPairs = touchingScratch_.data();
     auto group = [&](int gr, std::size_t& touching, double& maxOverlap) {
-        for (Index k = groupStart[gr]; k < groupStart[gr + 1]; ++k) pairForce(k, touching, maxOverlap);
+        int* picked = touchingPairs + groupStart[gr];
+        int m = 0;
+        for (int k = groupStart[gr]; k < groupStart[gr + 1]; ++k) {
+            const int i = pi[k];
+            const int j = pj[k];
+            const double dx = a.x[j] - a.x[i];
+            const double dy = a.y[j] - a.y[i];
+            const double dz = a.z[j] - a.z[i];
+            const double rSum = a.radius[i] + a.radius[j];
+            const bool touch = !(dx * dx + dy * dy + dz * dz >= rSum * rSum);   // NaN: touching
+            picked[m] = k;
+            m += touch;
+            double* xi = xiT[k].data();   // separated: the contact's history ends
+            xi[0] = touch ? xi[0] : 0.0;
+            xi[1] = touch ? xi[1] : 0.0;
+            xi[2] = touch ? xi[2] : 0.0;
+        }
+        for (int q = 0; q < m; ++q) pairForce(picked[q], touching, maxOverlap);
     };
     auto zeroBlock = [&](std::size_t first, std::size_t last) {
-        for (auto* a : {&p.fx, &p.fy, &p.fz, &p.tx, &p.ty, &p.tz}) {
-            std::fill(a->begin() + first, a->begin() + last, 0.0);
+        for (double* sum : {a.fx, a.fy, a.fz, a.tx, a.ty, a.tz}) {
+            std::fill(sum + first, sum + last, 0.0);
         }
     };
     sumPairGroups(settings_.nThreads, n, zeroBlock, group, contactCount_, maxOverlap_);
@@ -170,68 +221,121 @@ void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
 {
     const Index n = static_cast<Index>(p_.size());
     const double h = 0.5 * settings_.dt;
-    const Vec3 g(settings_.gravity[0], settings_.gravity[1], 0.0);
     const double weight = meanWeight_;
+    const int* wStart = wallContacts_.start.data();
+    const int* wWall = wallContacts_.wall.data();
+    Vec3* wXi = wallContacts_.xi.data();
+    const PlaneWall3* walls = walls_.data();
+    const ContactLaw* wallLaws = wallLaws_.data();
     SlabParticles& p = p_;
 
     std::size_t touching = 0;
     double maxOverlap = maxOverlap_;
-#pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
-    reduction(+ : touching) reduction(max : maxOverlap)
-    for (Index i = 0; i < n; ++i) {
-        const double ri = p.radius[i];
-        Vec3 force(p.fx[i], p.fy[i], p.fz[i]);
-        Vec3 torque = ri * Vec3(p.tx[i], p.ty[i], p.tz[i]);
-        const Vec3 pos = p.position(i);
-        const Vec3 v = p.velocity(i);
-        const Vec3 w = p.spin(i);
-        for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
-            const PlaneWall3& wall = walls_[wallContacts_.wall[s]];
-            const double overlap = ri - wall.distance(pos);
-            if (overlap <= 0.0) {
-                wallContacts_.xi[s].setZero();
-                continue;
+#pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
+    reduction(max : maxOverlap)
+    {
+        // As System's: each thread its own range of particles for both loops; the few
+        // particles with wall candidates first (their wall forces added to the pair sums in
+        // wall order, their torque made whole), then every particle's kick, vectorised.
+        const auto [first, last] = threadShare(n);
+        for (Index i = first; i < last; ++i) {
+            if (wStart[i] == wStart[i + 1]) continue;
+            const double ri = p.radius[i];
+            Vec3 force(p.fx[i], p.fy[i], p.fz[i]);
+            Vec3 torque = ri * Vec3(p.tx[i], p.ty[i], p.tz[i]);
+            const Vec3 pos = p.position(i);
+            const Vec3 v = p.velocity(i);
+            const Vec3 w = p.spin(i);
+            for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
+                const PlaneWall3& wall = walls[wWall[s]];
+                const double overlap = ri - wall.distance(pos);
+                if (overlap <= 0.0) {
+                    wXi[s].setZero();
+                    continue;
+                }
+                PairGeometry3 c;
+                c.overlap = overlap;
+                c.nHat = -wall.nHat;
+                c.vRel = v + (ri * w).cross(c.nHat);
+                c.rI = ri;
+                c.rJ = 0.0;
+                c.xiT = wXi[s];
+                const PairForce3 f = contactForce(c, wallLaws[p.classIndex[i]], historyDt);
+                force += f.force;
+                torque += f.torqueI;
+                wXi[s] = f.xiT;
+                ++touching;
+                maxOverlap = std::max(maxOverlap, overlap);
             }
-            PairGeometry3 c;
-            c.overlap = overlap;
-            c.nHat = -wall.nHat;
-            c.vRel = v + (ri * w).cross(c.nHat);
-            c.rI = ri;
-            c.rJ = 0.0;
-            c.xiT = wallContacts_.xi[s];
-            const PairForce3 f = contactForce(c, wallLaws_[p.classIndex[i]], historyDt);
-            force += f.force;
-            torque += f.torqueI;
-            wallContacts_.xi[s] = f.xiT;
-            ++touching;
-            maxOverlap = std::max(maxOverlap, overlap);
+            p.fx[i] = force.x(); p.fy[i] = force.y(); p.fz[i] = force.z();
+            p.tx[i] = torque.x(); p.ty[i] = torque.y(); p.tz[i] = torque.z();
         }
-        p.fx[i] = force.x(); p.fy[i] = force.y(); p.fz[i] = force.z();
-        p.tx[i] = torque.x(); p.ty[i] = torque.y(); p.tz[i] = torque.z();
-        if (!kick) continue;
-
-        const double invM = p.invMass[i];
-        Vec3 vNew;
-        if (fluid) {
-            // Second half-kick with the drag implicit, as System.
-            const double K = p.dragCoefficient[i];
-            const Vec3 gas(p.gasVx[i], p.gasVy[i], p.gasVz[i]);
-            const Vec3 extra(p.extraFx[i], p.extraFy[i], p.extraFz[i]);
-            vNew = (v + h * ((force + K * gas + extra) * invM + g)) / (1.0 + h * K * invM);
-            const Vec3 fluidForce = K * (gas - vNew) + extra;
-            p.fluidX[i] = fluidForce.x(); p.fluidY[i] = fluidForce.y(); p.fluidZ[i] = fluidForce.z();
-            p.meanVx[i] += weight * vNew.x();
-            p.meanVy[i] += weight * vNew.y();
-            p.meanVz[i] += weight * vNew.z();
+        if (kick && fluid) {
+            kickLoop<true, true>(first, last, h, weight);
+        } else if (kick) {
+            kickLoop<true, false>(first, last, h, weight);
         } else {
-            vNew = v + h * (force * invM + g);
+            kickLoop<false, false>(first, last, h, weight);
         }
-        p.vx[i] = vNew.x(); p.vy[i] = vNew.y(); p.vz[i] = vNew.z();
-        const Vec3 wNew = w + h * p.invInertia[i] * torque;
-        p.wx[i] = wNew.x(); p.wy[i] = wNew.y(); p.wz[i] = wNew.z();
     }
     contactCount_ += touching;
     maxOverlap_ = maxOverlap;
+}
+
+template <bool Kick, bool Fluid>
+void SlabSystem::kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, double weight)
+{
+    const Arrays a(p_);
+    const int* wStart = wallContacts_.start.data();
+    const double gx = settings_.gravity[0];
+    const double gy = settings_.gravity[1];
+#pragma omp simd
+    for (Index i = first; i < last; ++i) {
+        // Particles with walls have their whole torque already (the loop before): a factor
+        // of 1 keeps it exactly, and a select of loaded values vectorises.
+        const double ri = a.radius[i];
+        const double scale = wStart[i] == wStart[i + 1] ? ri : 1.0;
+        const double txi = scale * a.tx[i];
+        const double tyi = scale * a.ty[i];
+        const double tzi = scale * a.tz[i];
+        a.tx[i] = txi;
+        a.ty[i] = tyi;
+        a.tz[i] = tzi;
+        if constexpr (Kick) {
+            const double invM = a.invMass[i];
+            if constexpr (Fluid) {
+                // Second half-kick with the drag implicit, as System.
+                const double K = a.dragK[i];
+                const double denominator = 1.0 + h * K * invM;
+                const double vxNew =
+                    (a.vx[i] + h * ((a.fx[i] + K * a.gasVx[i] + a.extraFx[i]) * invM + gx))
+                    / denominator;
+                const double vyNew =
+                    (a.vy[i] + h * ((a.fy[i] + K * a.gasVy[i] + a.extraFy[i]) * invM + gy))
+                    / denominator;
+                const double vzNew =
+                    (a.vz[i] + h * ((a.fz[i] + K * a.gasVz[i] + a.extraFz[i]) * invM))
+                    / denominator;
+                a.vx[i] = vxNew;
+                a.vy[i] = vyNew;
+                a.vz[i] = vzNew;
+                a.fluidX[i] = K * (a.gasVx[i] - vxNew) + a.extraFx[i];
+                a.fluidY[i] = K * (a.gasVy[i] - vyNew) + a.extraFy[i];
+                a.fluidZ[i] = K * (a.gasVz[i] - vzNew) + a.extraFz[i];
+                a.meanVx[i] += weight * vxNew;
+                a.meanVy[i] += weight * vyNew;
+                a.meanVz[i] += weight * vzNew;
+            } else {
+                a.vx[i] += h * (a.fx[i] * invM + gx);
+                a.vy[i] += h * (a.fy[i] * invM + gy);
+                a.vz[i] += h * (a.fz[i] * invM);
+            }
+            const double hI = h * a.invInertia[i];
+            a.wx[i] += hI * txi;
+            a.wy[i] += hI * tyi;
+            a.wz[i] += hI * tzi;
+        }
+    }
 }
 
 bool SlabSystem::inside(std::size_t i) const
@@ -247,26 +351,35 @@ double SlabSystem::drift()
     const Index n = static_cast<Index>(p_.size());
     const double dt = settings_.dt;
     const double h = 0.5 * dt;
-    const Vec3 g(settings_.gravity[0], settings_.gravity[1], 0.0);
-    SlabParticles& p = p_;
+    const double gx = settings_.gravity[0];
+    const double gy = settings_.gravity[1];
+    const Box& b = settings_.box;
+    const double depth = settings_.slabDepth;
+    const Arrays a(p_);
 
     double maxDisplacement2 = 0.0;
     int lost = 0;
-#pragma omp parallel for num_threads(settings_.nThreads) schedule(static) \
+#pragma omp parallel for simd num_threads(settings_.nThreads) schedule(static) \
     reduction(max : maxDisplacement2) reduction(| : lost)
     for (Index i = 0; i < n; ++i) {
-        const double invM = p.invMass[i];
-        const Vec3 force(p.fx[i] + p.fluidX[i], p.fy[i] + p.fluidY[i], p.fz[i] + p.fluidZ[i]);
-        const Vec3 v = p.velocity(i) + h * (force * invM + g);
-        const Vec3 w = p.spin(i) + h * p.invInertia[i] * Vec3(p.tx[i], p.ty[i], p.tz[i]);
-        p.vx[i] = v.x(); p.vy[i] = v.y(); p.vz[i] = v.z();
-        p.wx[i] = w.x(); p.wy[i] = w.y(); p.wz[i] = w.z();
-        p.x[i] += dt * v.x();
-        p.y[i] += dt * v.y();
-        p.z[i] += dt * v.z();
-        const Vec3 moved(p.x[i] - p.xRef[i], p.y[i] - p.yRef[i], p.z[i] - p.zRef[i]);
-        maxDisplacement2 = std::max(maxDisplacement2, moved.squaredNorm());
-        lost |= !inside(i);
+        const double invM = a.invMass[i];
+        const double hI = h * a.invInertia[i];
+        a.vx[i] += h * ((a.fx[i] + a.fluidX[i]) * invM + gx);
+        a.vy[i] += h * ((a.fy[i] + a.fluidY[i]) * invM + gy);
+        a.vz[i] += h * ((a.fz[i] + a.fluidZ[i]) * invM);
+        a.wx[i] += hI * a.tx[i];
+        a.wy[i] += hI * a.ty[i];
+        a.wz[i] += hI * a.tz[i];
+        a.x[i] += dt * a.vx[i];
+        a.y[i] += dt * a.vy[i];
+        a.z[i] += dt * a.vz[i];
+        const double dx = a.x[i] - a.xRef[i];
+        const double dy = a.y[i] - a.yRef[i];
+        const double dz = a.z[i] - a.zRef[i];
+        maxDisplacement2 = std::max(maxDisplacement2, dx * dx + dy * dy + dz * dz);
+        // Written so that NaN counts as lost too (as inside()).
+        lost |= !(a.x[i] >= b.xMin && a.x[i] <= b.xMax && a.y[i] >= b.yMin && a.y[i] <= b.yMax
+                  && a.z[i] >= 0.0 && a.z[i] <= depth);
     }
     if (lost) throwLostParticle();
     return maxDisplacement2;

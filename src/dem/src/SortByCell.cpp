@@ -1,15 +1,17 @@
-// System's renumbering of the particles by search cell (the list build itself is
+// The engines' renumbering of the particles by search cell (the list build itself is
 // EngineBase's).
 
+#include "dem/EngineBase.hpp"
+#include "dem/SlabSystem.hpp"
 #include "dem/System.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 
 namespace dem {
 
-void System::sortByCell()
+template <class Derived, class Traits>
+void EngineBase<Derived, Traits>::sortByCell()
 {
     const std::size_t n = p_.size();
     if (n == 0) return;
@@ -37,20 +39,19 @@ void System::sortByCell()
         a = std::move(sorted);
     });
 
-    // Pair history under the new numbers, kept as i < j. The stored tangential displacement
-    // is symmetric in i and j (swapping them flips both nHat and the relative velocity, so
-    // vRel . tHat is unchanged): no sign to change.
+    // Pair history under the new numbers, kept as i < j; a pair whose partners swap takes
+    // the history as seen from the other partner (Traits::swapped).
     for (std::size_t k = 0; k < pairs_.size(); ++k) {
-        int i = newIndex[pairs_.i[k]];
-        int j = newIndex[pairs_.j[k]];
-        if (i > j) std::swap(i, j);
-        pairs_.i[k] = i;
-        pairs_.j[k] = j;
+        const int i = newIndex[pairs_.i[k]];
+        const int j = newIndex[pairs_.j[k]];
+        pairs_.i[k] = std::min(i, j);
+        pairs_.j[k] = std::max(i, j);
+        if (i > j) pairs_.xi[k] = Traits::swapped(pairs_.xi[k]);
     }
 
     // Wall history: regroup by the new particle numbers.
     if (wallContacts_.start.size() == n + 1) {
-        WallList next;
+        WallListT<History> next;
         next.start.assign(n + 1, 0);
         for (std::size_t q = 0; q < n; ++q) {
             const int i = order[q];
@@ -66,5 +67,8 @@ void System::sortByCell()
     // A fresh list under the new numbers (it carries the remapped history over).
     rebuildNeighbourList();
 }
+
+template void EngineBase<System, DiscTraits>::sortByCell();
+template void EngineBase<SlabSystem, SphereTraits>::sortByCell();
 
 } // namespace dem

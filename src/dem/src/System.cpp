@@ -9,8 +9,6 @@
 #include <cmath>
 #include <cstddef>
 
-#include <omp.h>
-
 namespace dem {
 
 namespace {
@@ -181,10 +179,7 @@ void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
         // The few particles with wall candidates first: their wall forces are added to the
         // pair sums in wall order, and their torque made whole (r ft + wall torques); then
         // every particle's kick, in a loop the compiler vectorises.
-        const Index nThreads = omp_get_num_threads();
-        const Index thread = omp_get_thread_num();
-        const Index first = n * thread / nThreads;
-        const Index last = n * (thread + 1) / nThreads;
+        const auto [first, last] = threadShare(n);
         for (Index i = first; i < last; ++i) {
             if (wStart[i] == wStart[i + 1]) continue;
             double fx = fxA[i], fy = fyA[i];

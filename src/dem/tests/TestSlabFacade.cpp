@@ -233,20 +233,3 @@ TEST(SlabFacade, MembersOfOneModeRefusedInTheOther)
     // A sphere poking through the front wall is refused.
     EXPECT_THROW(slab.addParticle(0, {0.015, 0.01, 0.0005}), Error);
 }
-
-TEST(SlabFacade, SortByCellKeepsTheSlabsNumbering)
-{
-    // The slab engine does not renumber, so its pair histories never swap sign: the call
-    // leaves every bit as it was.
-    auto sim = facadeRun(1, 3);
-    auto ref = facadeRun(1, 3);
-    sim->sortByCell();
-    for (int k = 0; k < 10; ++k) {
-        setFluid(*sim);
-        setFluid(*ref);
-        sim->advance(1e-4);
-        ref->advance(1e-4);
-    }
-    expectSameBits(*sim, *ref, "sortByCell");
-    for (std::size_t i = 0; i < sim->size(); ++i) ASSERT_EQ(sim->id()[i], static_cast<std::int64_t>(i));
-}

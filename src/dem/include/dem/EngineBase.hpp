@@ -12,6 +12,7 @@
 //   static position(p, i)                       Eigen vector of particle i
 //   static findPairs(search, p, skin, found, nThreads)
 //   static bool isZero(const History&), static zeroHistory()
+//   static swapped(const History&)              the history of pair (i, j) seen as (j, i)
 //   static axes(p)                              per axis: pointers to x, xRef, v, gasV,
 //                                               extraF, fluid, meanV, meanFluid (AxisArrays)
 
@@ -86,6 +87,9 @@ public:
     /// falling) or maxTime; returns the time spent, s.
     double settle(double maxTime, double keTolerance);
     void rebuildNeighbourList();
+    /// Renumbers the particles in the order of the search cells (row by row), so that
+    /// neighbours sit close in memory; contact history and forces move with them.
+    void sortByCell();
 
     double time() const { return static_cast<double>(stepCount_) * settings_.dt; }
     std::int64_t stepCount() const { return stepCount_; }

@@ -164,7 +164,6 @@ public:
     /// per-particle array (state, inputs, averages) moves along; id() keeps each particle's
     /// identity. The trajectory changes only in the order of round-off. Call it between
     /// CFD steps, before setting the fluid inputs, every few hundred DEM steps.
-    /// 3D: does nothing (the slab engine keeps one numbering; its pair histories never swap).
     void sortByCell();
 
     /// @name Averages over the sub-steps of the last advance()

@@ -81,6 +81,8 @@ struct SphereTraits {
     }
     static bool isZero(const Eigen::Vector3d& xi) { return xi.isZero(0.0); }
     static Eigen::Vector3d zeroHistory() { return Eigen::Vector3d::Zero(); }
+    /// Odd: the displacement sums v_i - v_j at the contact point, which a swap negates.
+    static Eigen::Vector3d swapped(const Eigen::Vector3d& xi) { return -xi; }
     static std::array<AxisArrays, 3> axes(Particles& p)
     {
         return {{{&p.x, &p.xRef, &p.vx, &p.gasVx, &p.extraFx, &p.fluidX, &p.meanVx, &p.meanFluidX},
@@ -90,8 +92,8 @@ struct SphereTraits {
 };
 
 /// Soft-sphere DEM of spheres in a slab; the step is EngineBase's (velocity Verlet, dashpots
-/// fed by the half-step velocity, the drag implicit), with 3-vectors. Its skin is fixed
-/// (Settings::neighbourSkin, or 0.1 d_min if that is negative).
+/// fed by the half-step velocity, the drag implicit), with 3-vectors. Its skin is
+/// Settings::neighbourSkin, or adaptive as System's if that is negative.
 class SlabSystem : public EngineBase<SlabSystem, SphereTraits> {
 public:
     explicit SlabSystem(const Settings& settings);
@@ -130,8 +132,14 @@ private:
     double drift();
     void computePairForces(double historyDt);
     void addWallForcesAndKick(double historyDt, bool kick, bool fluid);
+    /// Particles [first, last): the torque made whole (r times the pair sum, for those
+    /// without walls) and, if Kick, the second half-kick.
+    template <bool Kick, bool Fluid>
+    void kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, double weight);
     bool inside(std::size_t i) const;
     [[noreturn]] void throwLostParticle() const;
+
+    std::vector<int> touchingScratch_;   // the touching pairs of each group, per step
 };
 
 } // namespace dem

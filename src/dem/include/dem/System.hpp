@@ -35,6 +35,9 @@ struct DiscTraits {
     }
     static bool isZero(double xi) { return xi == 0.0; }
     static double zeroHistory() { return 0.0; }
+    /// Symmetric: swapping i and j flips both nHat and the relative velocity, so the
+    /// displacement along tHat (vRel . tHat summed) is unchanged.
+    static double swapped(double xi) { return xi; }
     static std::array<AxisArrays, 2> axes(Particles& p)
     {
         return {{{&p.x, &p.xRef, &p.vx, &p.gasVx, &p.extraFx, &p.fluidX, &p.meanVx, &p.meanFluidX},
@@ -49,10 +52,6 @@ public:
 
     void addParticle(int cls, double x, double y, double vx, double vy, double omega);
     void packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed);
-
-    /// Renumbers the particles in the order of the search cells (row by row), so that
-    /// neighbours sit close in memory; contact history and forces move with them.
-    void sortByCell();
 
     double kineticEnergy() const;
     double elasticEnergy() const;
