@@ -1,6 +1,6 @@
 #!/bin/bash
 # A bed shared by two cases through initialBed/file (issue 13):
-#   - dpmPackBed saves it; run again for the same particles it keeps it
+#   - dpmPackBed saves it (reporting the settling every 0.1 s); run again for the same particles it keeps it
 #     (nothing packed, the file unchanged);
 #   - a second case with the same particles starts from it;
 #   - dpmPackBed -overwrite in a case of another mix replaces it and says
@@ -19,6 +19,8 @@ done
 cd "$workDir/a" || fail "no case a"
 dpmPackBed >log.dpmPackBed 2>&1 || { tail -20 log.dpmPackBed; fail "dpmPackBed"; }
 grep -q "^Saved the bed of 730 particles to \"$bed\"" log.dpmPackBed || fail "no bed saved"
+grep -q "^Particles: settling, 0.1 s of 0.3, kinetic energy per particle " log.dpmPackBed \
+    || fail "dpmPackBed does not report the settling's progress every 0.1 s"
 cp "$bed" "$workDir/bed.first"
 
 dpmPackBed >log.dpmPackBed.again 2>&1 || { tail -20 log.dpmPackBed.again; fail "dpmPackBed again"; }

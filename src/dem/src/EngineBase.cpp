@@ -80,11 +80,11 @@ void EngineBase<Derived, Traits>::checkClass(int cls) const
 }
 
 template <class Derived, class Traits>
-double EngineBase<Derived, Traits>::packBed(const BedRecipe& recipe)
+double EngineBase<Derived, Traits>::packBed(const BedRecipe& recipe, const SettleProgress& progress)
 {
     checkPackBed(p_.size(), recipe);
     derived().packRandom(recipe.countPerClass, recipe.region, recipe.seed);
-    const double spent = settle(recipe.settleTime, recipe.keTolerance);
+    const double spent = settle(recipe.settleTime, recipe.keTolerance, progress);
     recipe_ = recipe;
     return spent;
 }
@@ -163,7 +163,8 @@ void EngineBase<Derived, Traits>::advance(double dtOuter)
 }
 
 template <class Derived, class Traits>
-double EngineBase<Derived, Traits>::settle(double maxTime, double keTolerance)
+double EngineBase<Derived, Traits>::settle(double maxTime, double keTolerance,
+                                           const SettleProgress& progress)
 {
     const std::int64_t first = stepCount_;
     if (p_.size() == 0) return 0.0;
@@ -178,6 +179,7 @@ double EngineBase<Derived, Traits>::settle(double maxTime, double keTolerance)
     for (std::int64_t k = 0; k < nSteps; ++k) {
         if (k % checkEvery == 0) {
             const double ke = derived().kineticEnergy() / n;
+            if (progress) progress(static_cast<double>(k) * settings_.dt, ke);
             if (k > 0 && ke < keTolerance && ke < previous) break;
             previous = ke;
         }

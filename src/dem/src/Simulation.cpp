@@ -39,9 +39,9 @@ void Simulation::packRandom(const std::vector<int>& countPerClass, const Box& re
     system_->packRandom(countPerClass, region, seed);
 }
 
-double Simulation::packBed(const BedRecipe& recipe)
+double Simulation::packBed(const BedRecipe& recipe, const SettleProgress& progress)
 {
-    return slab_ ? slab_->packBed(recipe) : system_->packBed(recipe);
+    return slab_ ? slab_->packBed(recipe, progress) : system_->packBed(recipe, progress);
 }
 
 void Simulation::addParticle(int classIndex, double x, double y, double vx, double vy, double omega)
@@ -59,9 +59,10 @@ void Simulation::addParticle(int classIndex, const Vector3& position, const Vect
     slab("addParticle with z").addParticle(classIndex, vec(position), vec(velocity), vec(spin));
 }
 
-double Simulation::settle(double maxTime, double keTolerance)
+double Simulation::settle(double maxTime, double keTolerance, const SettleProgress& progress)
 {
-    return slab_ ? slab_->settle(maxTime, keTolerance) : system_->settle(maxTime, keTolerance);
+    return slab_ ? slab_->settle(maxTime, keTolerance, progress)
+                 : system_->settle(maxTime, keTolerance, progress);
 }
 std::size_t Simulation::size() const
 {

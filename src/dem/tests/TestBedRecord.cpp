@@ -310,3 +310,34 @@ TEST(BedRecord, CloseValuesPrintApart)
     const Texts close = textsApart(0.1 + 0.2, 0.3);
     EXPECT_NE(close.first, close.second);
 }
+
+TEST(BedRecord, SettlingReportsItsProgressWithoutChangingTheBed)
+{
+    // Checked every 100 steps: 0.005 s at dt = 1e-5 s is 500 steps, so 5 reports at
+    // 0, 1, ..., 4 ms (no energy tolerance: the whole settling time runs).
+    BedRecipe r = recipe();
+    r.settleTime = 0.005;
+    ASSERT_DOUBLE_EQ(settings().dt, 1e-5);
+    std::vector<double> times, energies;
+    Simulation reported(settings());
+    reported.packBed(r, [&](double t, double ke) {
+        times.push_back(t);
+        energies.push_back(ke);
+    });
+    ASSERT_EQ(times.size(), 5u);
+    for (std::size_t k = 0; k < times.size(); ++k) EXPECT_DOUBLE_EQ(times[k], 1e-3 * k);
+
+    // The same bed without a report, to the bit.
+    Simulation silent(settings());
+    silent.packBed(r);
+    ASSERT_EQ(silent.size(), reported.size());
+    EXPECT_EQ(std::memcmp(silent.y(), reported.y(), silent.size() * sizeof(double)), 0);
+    EXPECT_EQ(std::memcmp(silent.vy(), reported.vy(), silent.size() * sizeof(double)), 0);
+
+    // The energy reported at 3 ms is that of the same packing settled for 3 ms.
+    Simulation shorter(settings());
+    shorter.packRandom(r.countPerClass, r.region, r.seed);
+    shorter.settle(0.003, 0.0);
+    EXPECT_EQ(energies[3], shorter.kineticEnergy() / static_cast<double>(shorter.size()));
+    EXPECT_GT(energies[3], 0.0);
+}

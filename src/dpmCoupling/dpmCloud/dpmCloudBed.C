@@ -119,7 +119,17 @@ void Foam::dpmCloud::packNewBed(const dem::BedRecipe& r)
         << r.region.yMax - r.region.yMin << " m (seed " << label(r.seed)
         << "), then " << r.settleTime << " s of settling" << endl;
 
-    guarded("Cannot pack the initial bed", [&]{ dem_->packBed(r); });
+    // A bed of 10^4 spheres settles for many minutes: say how far it is, every 0.1 s
+    // of settling (the report does not change the bed).
+    scalar nextReport = 0.1;
+    const dem::SettleProgress progress = [&](double t, double ke)
+    {
+        if (t + 1e-9 < nextReport) return;
+        Info<< "Particles: settling, " << t << " s of " << r.settleTime
+            << ", kinetic energy per particle " << ke << " J" << endl;
+        nextReport += 0.1;
+    };
+    guarded("Cannot pack the initial bed", [&]{ dem_->packBed(r, progress); });
 
     Info<< "Particles: settled, kinetic energy " << dem_->kineticEnergy()
         << " J, largest overlap " << dem_->maxOverlap() << " m" << endl;

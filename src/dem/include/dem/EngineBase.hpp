@@ -77,15 +77,16 @@ public:
 
     /// Derived::packRandom, then settle into an empty box as `recipe` says; the recipe is
     /// kept and saved with the state. Returns the settling time spent, s.
-    double packBed(const BedRecipe& recipe);
+    double packBed(const BedRecipe& recipe, const SettleProgress& progress = {});
     /// One DEM step; with fluid = false the fluid inputs are ignored.
     void step(bool fluid);
     /// The sub-steps of one CFD step of dtOuter, with the sub-step means of the velocity
     /// and the fluid force.
     void advance(double dtOuter);
     /// Steps without fluid until at rest (kinetic energy per particle below keTolerance and
-    /// falling) or maxTime; returns the time spent, s.
-    double settle(double maxTime, double keTolerance);
+    /// falling) or maxTime; returns the time spent, s. progress(time spent, kinetic energy
+    /// per particle) at each check, if given.
+    double settle(double maxTime, double keTolerance, const SettleProgress& progress = {});
     void rebuildNeighbourList();
     /// Renumbers the particles in the order of the search cells (row by row), so that
     /// neighbours sit close in memory; contact history and forces move with them.

@@ -5,6 +5,7 @@
 #include "dem/Error.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -71,6 +72,9 @@ struct BedRecipe {
     double keTolerance = 0.0;          ///< settled below this kinetic energy per particle, J
 };
 
+/// Called while a bed settles: (time spent settling, s; kinetic energy per particle, J).
+using SettleProgress = std::function<void(double, double)>;
+
 /// Throws dem::Error naming `path` and the reason (a directory, a parent that is a file,
 /// no permission, ...) if Simulation::save could not write a state there; writes nothing
 /// (a probe file in the nearest existing directory is created and removed).
@@ -104,8 +108,8 @@ public:
 
     /// Packs and settles a bed as `recipe` says (packRandom, then settle) in an empty
     /// simulation, and keeps the recipe: save() records it with the bed. Returns the time
-    /// spent settling, s.
-    double packBed(const BedRecipe& recipe);
+    /// spent settling, s. `progress`, if given, is called as settle() calls it.
+    double packBed(const BedRecipe& recipe, const SettleProgress& progress = {});
 
     /// Adds one particle; throws if outside the box or overlapping another by more than
     /// 1 % of the smaller diameter.
@@ -118,8 +122,10 @@ public:
 
     /// Advances without fluid until the kinetic energy per particle < keTolerance (J) and
     /// falling (checked every 100 steps; a bed released from rest first gains energy), or
-    /// until maxTime (s) has passed; returns the time spent, s.
-    double settle(double maxTime, double keTolerance);
+    /// until maxTime (s) has passed; returns the time spent, s. `progress`, if given, is
+    /// called at each check with the time spent settling (s) and the kinetic energy per
+    /// particle (J): a long settling can report how far it is. It does not change the bits.
+    double settle(double maxTime, double keTolerance, const SettleProgress& progress = {});
 
     std::size_t size() const;
     const Settings& settings() const;
