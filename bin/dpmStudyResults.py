@@ -398,9 +398,10 @@ def results(study_dir, X, rate_window=None, pictures=True):
     write_csv(os.path.join(out, "findings.csv"),
               [OrderedDict((k, v) for k, v in r.items() if k != "cases") for r in found])
     write_ensemble(out, ensemble, ewindows, found, X, rate_window)
-    dpmStudyVerdicts.write_verdicts(
-        out, dpmStudyVerdicts.variant_effects(found, groups_of([r for r in rows if r["finished"]])),
-        ens.LEVEL)
+    effects = dpmStudyVerdicts.variant_effects(
+        found, groups_of([r for r in rows if r["finished"]]), BASELINE)
+    write_csv(os.path.join(out, "verdicts.csv"), effects)
+    dpmStudyVerdicts.write_verdicts(out, effects, ens.LEVEL)
     write_variants(out, cases)
     say("results: %s" % os.path.join(out, "summary.md"))
     import dpmStudyFigures

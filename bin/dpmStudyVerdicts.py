@@ -10,13 +10,10 @@ toward or away from the paper beyond the packings' scatter, or leaves it
 within that scatter. Then, per finding, the variants under each effect:
 the table the verdicts of docs/reproduction.md rest on."""
 
-import csv
 import os
 from collections import OrderedDict
 
 import dpmEnsemble as ens
-
-BASELINE = "baseline"
 
 
 def opposite(sign):
@@ -47,20 +44,21 @@ def effect(paper, base_sign, var_sign, shift_sign):
     return "no interval (the baseline needs two seeds or more)"
 
 
-def variant_effects(found, groups):
+def variant_effects(found, groups, baseline_name):
     """Rows of verdicts.md/csv. found: findings() rows; groups: (variant,
     w, p) -> the finished rows of its seeds; each finding row carries its
-    cases in 'cases' (a, b or None) and its quantity."""
-    base = {(r["finding"], r["comparison"]): r for r in found if r["variant"] == BASELINE}
+    cases in 'cases' (a, b or None) and its quantity; baseline_name: the
+    variant name of the template as it is."""
+    base = {(r["finding"], r["comparison"]): r for r in found if r["variant"] == baseline_name}
     out = []
     for r in found:
         b = base.get((r["finding"], r["comparison"]))
-        if r["variant"] == BASELINE or b is None:
+        if r["variant"] == baseline_name or b is None:
             continue
         k = r["quantity"]
         keys = [c for c in r["cases"] if c is not None]
         variant = [[x[k] for x in groups[(r["variant"],) + c]] for c in keys]
-        baseline = [[x[k] for x in groups[(BASELINE,) + c]] for c in keys]
+        baseline = [[x[k] for x in groups[(baseline_name,) + c]] for c in keys]
         shift, half, borrowed = ens.shift_ci(variant, baseline)
         shift_sign = ens.sign_of(shift, half)
         out.append(OrderedDict(
@@ -73,17 +71,8 @@ def variant_effects(found, groups):
     return out
 
 
-def write_csv(path, rows):
-    with open(path, "w", newline="") as f:
-        if rows:
-            wr = csv.DictWriter(f, list(rows[0]))
-            wr.writeheader()
-            wr.writerows(rows)
-
-
 def write_verdicts(out, effects, level):
-    """verdicts.md and verdicts.csv in the results directory `out`."""
-    write_csv(os.path.join(out, "verdicts.csv"), effects)
+    """verdicts.md in the results directory `out`."""
     lvl = int(round(level * 100))
     with open(os.path.join(out, "verdicts.md"), "w") as f:
         f.write("What each variant does to the paper's findings, against the baseline's "

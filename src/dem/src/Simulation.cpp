@@ -110,11 +110,7 @@ void Simulation::advance(double dtOuter)
 }
 void Simulation::sortByCell()
 {
-    if (slab_) {
-        slab_->sortByCell();
-        return;
-    }
-    system_->sortByCell();
+    slab_ ? slab_->sortByCell() : system_->sortByCell();
 }
 
 const double* Simulation::meanVelocityX() const { return DEM_ARRAY(meanVx, meanVx); }

@@ -29,6 +29,12 @@ const Settings& validatedSlab(const Settings& s)
 
 constexpr double skinStartFraction = 0.4;   // of d_min, the adaptive skin's start, as System's
 
+/// Whether a sphere centre lies in the slab; written so that NaN counts as outside.
+inline bool insideSlab(double x, double y, double z, const Box& b, double depth)
+{
+    return x >= b.xMin && x <= b.xMax && y >= b.yMin && y <= b.yMax && z >= 0.0 && z <= depth;
+}
+
 /// Plain pointers to the slab's per-particle arrays, taken once before a loop: the pair
 /// loop reads them without re-loading through the vectors, and the simd loops need no
 /// alias checks.
@@ -338,14 +344,6 @@ void SlabSystem::kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, d
     }
 }
 
-bool SlabSystem::inside(std::size_t i) const
-{
-    const Box& b = settings_.box;
-    // Written so that NaN counts as outside.
-    return p_.x[i] >= b.xMin && p_.x[i] <= b.xMax && p_.y[i] >= b.yMin && p_.y[i] <= b.yMax
-           && p_.z[i] >= 0.0 && p_.z[i] <= settings_.slabDepth;
-}
-
 double SlabSystem::drift()
 {
     const Index n = static_cast<Index>(p_.size());
@@ -377,9 +375,7 @@ double SlabSystem::drift()
         const double dy = a.y[i] - a.yRef[i];
         const double dz = a.z[i] - a.zRef[i];
         maxDisplacement2 = std::max(maxDisplacement2, dx * dx + dy * dy + dz * dz);
-        // Written so that NaN counts as lost too (as inside()).
-        lost |= !(a.x[i] >= b.xMin && a.x[i] <= b.xMax && a.y[i] >= b.yMin && a.y[i] <= b.yMax
-                  && a.z[i] >= 0.0 && a.z[i] <= depth);
+        lost |= !insideSlab(a.x[i], a.y[i], a.z[i], b, depth);
     }
     if (lost) throwLostParticle();
     return maxDisplacement2;
@@ -445,7 +441,7 @@ Vec3 SlabSystem::wallForce(int w) const
 void SlabSystem::throwLostParticle() const
 {
     for (std::size_t i = 0; i < p_.size(); ++i) {
-        if (!inside(i)) {
+        if (!insideSlab(p_.x[i], p_.y[i], p_.z[i], settings_.box, settings_.slabDepth)) {
             throw Error("particle id " + std::to_string(p_.id[i]) + " left the slab at ("
                         + formatValue(p_.x[i]) + ", " + formatValue(p_.y[i]) + ", "
                         + formatValue(p_.z[i]) + ") m");

@@ -136,7 +136,6 @@ private:
     /// without walls) and, if Kick, the second half-kick.
     template <bool Kick, bool Fluid>
     void kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, double weight);
-    bool inside(std::size_t i) const;
     [[noreturn]] void throwLostParticle() const;
 
     std::vector<int> touchingScratch_;   // the touching pairs of each group, per step
