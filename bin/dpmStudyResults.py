@@ -4,6 +4,7 @@ ensembles, what each variant does to them (dpmStudyVerdicts) and the
 figures. Used by bin/dpmStudy (-results)."""
 
 import csv
+import fcntl
 import os
 import re
 import subprocess
@@ -372,6 +373,18 @@ def results(study_dir, X, rate_window=None, pictures=True):
     """Remake <study_dir>/results from every case there."""
     out = os.path.join(study_dir, "results")
     os.makedirs(out, exist_ok=True)
+    # One at a time: two dpmStudy runs of a work queue that finish together
+    # would write the same tables (and the cases' bed statistics) at once
+    with open(os.path.join(out, ".lock"), "w") as lock:
+        try:
+            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            say("results: waiting for another dpmStudy making %s" % out)
+            fcntl.flock(lock, fcntl.LOCK_EX)
+        remake_results(study_dir, out, X, rate_window, pictures)
+
+
+def remake_results(study_dir, out, X, rate_window, pictures):
     cases = find_cases(study_dir)
     rows, windows, dirs = [], [], {}
     for c in cases:

@@ -3,7 +3,8 @@
 # Table 3's particles (331 small + 72 large), 0.1 s of settling, 0.1 s of
 # gas, restart states every 0.02 s, two cases at once.
 # Expected:
-#   1. a second dpmStudy started meanwhile skips the running case (and
+#   1. its solvers (two at once) wait passively (OMP_WAIT_POLICY);
+#      a second dpmStudy started meanwhile skips the running case (and
 #      leaves its time directories alone); killed (SIGTERM) while the first
 #      case runs, it stops its solvers;
 #   2. run again, it continues that case from its last written time (the
@@ -15,7 +16,9 @@
 #      s, checked against the function object's rows), the M(t) figures per pressure and
 #      per mass fraction, indices.png, hydrodynamics.png, snapshots.png;
 #   4. a third run finds everything finished and runs nothing; -status
-#      shows the bed and both cases done at 0.1 s;
+#      shows the bed and both cases done at 0.1 s; two -results at once
+#      (two copies of a work queue finishing together) both succeed, the
+#      second waiting for the first, and make the same summary.csv;
 #   5. -excessVelocity 0.2 gives a case with U0 = Umf + 0.2 m/s;
 #   6. -seeds 2: a bed per seed (packed from seeds 1 and 2: different
 #      beds), each case started from its own seed's bed, an ensemble row
@@ -41,7 +44,8 @@ case1=study/w0.50_1bar
 echo "1. start, then kill while $case1 runs"
 # dpmStudy itself in the background (not a function's subshell), so that
 # the signal reaches it
-dpmStudy study "${studyArgs[@]}" > log.study1 2>&1 &
+# (its cases share the cores: it makes their OpenMP threads wait passively)
+env -u OMP_WAIT_POLICY dpmStudy study "${studyArgs[@]}" > log.study1 2>&1 &
 pid=$!
 for i in $(seq 1 600)
 do
@@ -58,6 +62,8 @@ do
     [ "$(readlink /proc/$p/cwd)" = "$(cd $case1 && pwd -P)" ] && solver=$p
 done
 [ -n "$solver" ] || { kill $pid; fail "no solver of $case1 running"; }
+tr '\0' '\n' < /proc/$solver/environ | grep -qx OMP_WAIT_POLICY=passive \
+    || { kill $pid; fail "dpmStudy -j 2 did not give its solvers OMP_WAIT_POLICY=passive"; }
 kill -STOP $solver
 study -p 1 -noPictures > log.studyTwice 2>&1 || { kill -CONT $solver; cat log.studyTwice; fail "second dpmStudy failed"; }
 kill -CONT $solver
@@ -131,6 +137,17 @@ done
 
 echo "4. nothing left to run"
 study -noPictures > log.study3 2>&1 || fail "dpmStudy (third run)"
+cp study/results/summary.csv summary.before
+# the second is started while the first holds the lock (held for the test by flock)
+exec 8>study/results/.lock && flock 8 || fail "flock"
+dpmStudy study -results -noPictures -mean 0.05 > log.results1 2>&1 & first=$!
+dpmStudy study -results -noPictures -mean 0.05 > log.results2 2>&1 & second=$!
+sleep 2; flock -u 8; exec 8>&-
+wait $first || { cat log.results1; fail "the first of two -results failed"; }
+wait $second || { cat log.results2; fail "the second of two -results failed"; }
+[ $(cat log.results1 log.results2 | grep -c "^results: waiting for another dpmStudy") = 2 ] \
+    || fail "-results did not wait for the lock's holder"
+cmp -s summary.before study/results/summary.csv || fail "two -results at once changed summary.csv"
 [ $(grep -c "finished (t = 0.1 s)" log.study3) = 2 ] || { cat log.study3; fail "third run ran something"; }
 dpmStudy study -status > log.status 2>&1 || { cat log.status; fail "dpmStudy -status"; }
 cat log.status
