@@ -68,8 +68,10 @@ inline double normalForce(double overlap, double vn, const ContactLaw& law)
 /// xi = -Ft/kt. Dashpot velocity is the one passed in vRel. dt = 0 evaluates without
 /// accumulating history. Torques: (r_i nHat) x Ft on i and (r_j nHat) x Ft on j (its lever
 /// arm -r_j nHat times its force -Ft).
+/// Always inlined: GCC's size heuristics kept the 3D kernel out of line, called through
+/// the shared library's PLT from every pair loop (40 % of a slab run's samples in the call).
 template <int Dim>
-inline PairForceT<Dim> contactForce(const PairGeometryT<Dim>& g, const ContactLaw& law, double dt)
+[[gnu::always_inline]] inline PairForceT<Dim> contactForce(const PairGeometryT<Dim>& g, const ContactLaw& law, double dt)
 {
     PairForceT<Dim> out;
     if constexpr (Dim == 2) {
