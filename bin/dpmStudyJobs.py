@@ -1,0 +1,180 @@
+"""The local runner of bin/dpmStudy: each bed or case a child process group
+(Job), run a few at once with progress lines (run_here), skipping a
+directory another process works in (running_in); and the restart
+housekeeping: logs rotated, time directories without a complete restart
+state set aside (latest_complete_time)."""
+
+import os
+import re
+import signal
+import subprocess
+import sys
+import time
+
+from dpmFoamFields import time_dirs
+
+
+PROGRESS = re.compile(r"Progress: t = (\S+) s \((\d+)%\), (\S+) wall s per "
+                      r"simulated s, ETA (.*)$")
+
+
+def say(*args):
+    print(*args, flush=True)
+
+
+def complete(case, name):
+    d = os.path.join(case, name)
+    return all(os.path.isfile(os.path.join(d, f))
+               for f in ("U", "p_rgh", os.path.join("uniform", "dem.state")))
+
+
+def latest_complete_time(case, set_aside=False):
+    """The latest time from which the case can continue; with set_aside,
+    times after it without a complete restart state are renamed
+    <time>.incomplete (only for a case about to run: in a running case they
+    are being written)."""
+    dirs = time_dirs(case)
+    for t, name in reversed(dirs):
+        if t == 0 or complete(case, name):
+            return t
+        if set_aside:
+            os.rename(os.path.join(case, name), os.path.join(case, name + ".incomplete"))
+    return None
+
+
+def rotate_log(path):
+    if os.path.exists(path):
+        n = 1
+        while os.path.exists("%s.%d" % (path, n)):
+            n += 1
+        os.rename(path, "%s.%d" % (path, n))
+
+
+def running_in(directory):
+    """PID of a solver, mesher or packer working in directory (started by
+    another dpmStudy or by hand), or None. Two runs of one case would
+    overwrite each other's time directories."""
+    target = os.path.realpath(directory)
+    for pid in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            with open("/proc/%s/comm" % pid) as f:
+                name = f.read().strip()
+            if name in ("dpmFoam2D", "dpmPackBed", "blockMesh") and \
+                    os.path.realpath("/proc/%s/cwd" % pid) == target:
+                return int(pid)
+        except OSError:         # gone, or not ours to look at
+            continue
+    return None
+
+
+class Job:
+    """One step of the study run as a child process group: a bed to pack or
+    a case to run (its steps chained in one shell command)."""
+
+    def __init__(self, name, directory, command, log, after=None):
+        self.name, self.dir, self.command, self.log = name, directory, command, log
+        self.after = after          # a Job that must succeed first
+        self.proc = None
+        self.state = "waiting"      # waiting, running, done, failed
+        self.started = None
+
+    def start(self, env=None):
+        rotate_log(os.path.join(self.dir, self.log))
+        out = open(os.path.join(self.dir, self.log), "w")
+        self.proc = subprocess.Popen(["bash", "-c", self.command], cwd=self.dir,
+                                     stdout=out, stderr=subprocess.STDOUT, env=env,
+                                     # a group of its own to stop it whole, but the
+                                     # same session: a new session would start a new
+                                     # scheduler autogroup, and `nice dpmStudy` would
+                                     # not lower the solvers against other sessions
+                                     process_group=0)
+        out.close()
+        self.state, self.started = "running", time.time()
+
+    def poll(self):
+        if self.state == "running" and self.proc.poll() is not None:
+            self.state = "done" if self.proc.returncode == 0 else "failed"
+        return self.state
+
+    def stop(self):
+        if self.proc is not None and self.proc.poll() is None:
+            os.killpg(self.proc.pid, signal.SIGTERM)
+            try:
+                self.proc.wait(20)
+            except subprocess.TimeoutExpired:
+                os.killpg(self.proc.pid, signal.SIGKILL)
+                self.proc.wait()
+
+
+def status(study, job):
+    """The progress line of a job: its state, or where a running case is."""
+    if job.state != "running" or job.log != "log.dpmFoam2D":
+        return job.state
+    last = None
+    try:
+        with open(os.path.join(job.dir, job.log), errors="replace") as f:
+            for line in f:
+                if line.startswith("Progress:"):
+                    last = line
+    except OSError:
+        pass
+    m = PROGRESS.match(last.strip()) if last else None
+    if not m:
+        return "running (starting)"
+    return "running t = %s s of %g (%s%%), %.0f wall s per simulated s, ETA %s" % (
+        m.group(1), study.end_time(job.dir), m.group(2), float(m.group(3)), m.group(4))
+
+
+def run_here(study, jobs):
+    """Run the jobs here, study.a.j at once, reporting every study.a.interval s."""
+    def stop(signum, frame):
+        say("dpmStudy: stopping the solvers (run again to continue)")
+        for j in jobs:
+            j.stop()
+        sys.exit(128 + signum)
+    signal.signal(signal.SIGINT, stop)
+    signal.signal(signal.SIGTERM, stop)
+
+    say("dpmStudy: %d job(s), %d at once, in %s" % (len(jobs), study.a.j, study.dir))
+    env = None
+    if study.a.j > 1 and "OMP_WAIT_POLICY" not in os.environ:
+        # Cases sharing the cores: a case's OpenMP threads (nThreads > 1,
+        # the concurrent schedule) must sleep, not spin, while they wait,
+        # or they hold the core another case needs (docs/performance.md)
+        env = dict(os.environ, OMP_WAIT_POLICY="passive")
+        say("dpmStudy: OMP_WAIT_POLICY=passive for the cases (they share the cores)")
+    last_report = 0
+    while True:
+        for j in jobs:
+            j.poll()
+            if j.state == "waiting" and j.after is not None and j.after.state == "failed":
+                j.state = "failed (no bed)"
+            if j.state == "waiting" and j.after is not None and \
+                    j.after.state.startswith("skipped"):
+                j.state = "skipped (its bed is packed by another process: run again)"
+        running = [j for j in jobs if j.state == "running"]
+        for j in jobs:
+            if len(running) >= study.a.j:
+                break
+            if j.state == "waiting" and (j.after is None or j.after.state == "done"):
+                # another dpmStudy may have started it since this one looked
+                pid = running_in(j.dir)
+                if pid:
+                    j.state = "skipped (process %d runs in it)" % pid
+                    continue
+                j.start(env)
+                running.append(j)
+        busy = any(j.state in ("waiting", "running") for j in jobs)
+        if not busy or time.time() - last_report >= study.a.interval:
+            last_report = time.time()
+            say("-- %s" % time.strftime("%H:%M:%S"))
+            for j in jobs:
+                say("%-16s %s" % (j.name, status(study, j)))
+        if not busy:
+            break
+        time.sleep(1)
+    failed = [j for j in jobs if j.state.startswith("failed")]
+    for j in failed:
+        say("FAILED: %s, see %s" % (j.name, os.path.join(j.dir, j.log)))
+    if failed:
+        sys.exit(1)
