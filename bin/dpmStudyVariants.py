@@ -1,0 +1,130 @@
+"""The variants of bin/dpmStudy (-variant): named sets of dictionary edits
+applied to a study's beds and cases, checked against the template; and the
+foamDictionary edits they and the study's settings make."""
+
+import os
+import re
+import subprocess
+import sys
+
+
+VARIANT_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9.-]*$")
+
+
+def foam_set(dict_file, entry, value):
+    subprocess.run(["foamDictionary", "-entry", entry, "-set", str(value),
+                    dict_file], check=True, stdout=subprocess.DEVNULL)
+
+
+def foam_remove(dict_file, entry):
+    """Remove entry if the dictionary has it."""
+    r = subprocess.run(["foamDictionary", "-entry", entry, dict_file],
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    if r.returncode == 0:
+        subprocess.run(["foamDictionary", "-entry", entry, "-remove", dict_file],
+                       check=True, stdout=subprocess.DEVNULL)
+
+
+def foam_get(dict_file, entry):
+    r = subprocess.run(["foamDictionary", "-entry", entry, "-value", dict_file],
+                       check=True, stdout=subprocess.PIPE, text=True)
+    return r.stdout.strip()
+
+
+class Variant:
+    """A named set of dictionary edits (see the usage of bin/dpmStudy)."""
+
+    def __init__(self, spec, template):
+        # a name is one of the template's; anything with a '/' is a file
+        path = spec if os.sep in spec else os.path.join(template, "variants", spec)
+        if not os.path.isfile(path):
+            known = list_variants(template)
+            sys.exit("dpmStudy: no variant '%s' (%s); the template's variants: %s"
+                     % (spec, path, ", ".join(known) if known else "none"))
+        self.path = os.path.realpath(path)
+        with open(path) as f:
+            self.text = f.read()
+        self.name = self.recorded_name(self.text) or os.path.basename(path)
+        if not VARIANT_NAME.match(self.name):
+            sys.exit("dpmStudy: variant name '%s' (%s): letters, digits, '.' and '-' "
+                     "only, starting with a letter" % (self.name, path))
+        self.edits = []
+        for n, line in enumerate(self.text.splitlines(), 1):
+            words = line.split("#", 1)[0].split(None, 2)
+            if not words:
+                continue
+            if len(words) < 3:
+                sys.exit("dpmStudy: %s line %d: '<file> <entry> <value>' or "
+                         "'<file> <entry> -remove' expected, got '%s'" % (path, n, line.strip()))
+            self.edits.append((n, words[0], words[1], words[2].strip()))
+        if not self.edits:
+            sys.exit("dpmStudy: variant %s has no edits" % path)
+
+    @staticmethod
+    def recorded_name(text):
+        """A case's record starts with '# variant <name>'."""
+        m = re.match(r"# variant (\S+)\n", text)
+        return m.group(1) if m else None
+
+    def check(self, template):
+        """Every edit names a file of the template and an entry it has (a
+        misspelt entry would otherwise be added, not changed)."""
+        for n, f, entry, value in self.edits:
+            target = os.path.join(template, f)
+            if not os.path.isfile(target):
+                sys.exit("dpmStudy: %s line %d: the template has no file %s"
+                         % (self.path, n, f))
+            r = subprocess.run(["foamDictionary", "-entry", entry, target],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+            if r.returncode != 0:
+                sys.exit("dpmStudy: %s line %d: %s has no entry '%s'"
+                         % (self.path, n, f, entry))
+
+    # Edits that leave the packed bed as the template's: the gas's numerics
+    # and closures. Any other edit (particles, contact, voidage model, mesh,
+    # counts) gets the variant beds of its own, packed with its edits.
+    GAS_ONLY_FILES = ("system/fvSchemes", "system/fvSolution", "constant/gasProperties")
+    GAS_ONLY_PARTICLE_ENTRIES = ("dragModel", "formulation")
+
+    def shapes_bed(self):
+        for n, f, entry, value in self.edits:
+            f = os.path.normpath(f)
+            if f in self.GAS_ONLY_FILES:
+                continue
+            if f == "constant/particleProperties" and (
+                    entry in self.GAS_ONLY_PARTICLE_ENTRIES or entry.startswith("dragCoeffs")
+                    or entry.endswith("Coeffs")):
+                continue
+            return True
+        return False
+
+    def apply(self, case):
+        # caseSettings first: foamDictionary writes the other files with the
+        # values they include from it expanded, as they are at that moment
+        edits = sorted(self.edits, key=lambda e: os.path.normpath(e[1]) != "constant/caseSettings")
+        for n, f, entry, value in edits:
+            if value == "-remove":
+                foam_remove(os.path.join(case, f), entry)
+            else:
+                foam_set(os.path.join(case, f), entry, value)
+        with open(os.path.join(case, "constant", "variant"), "w") as f:
+            f.write(self.record())
+
+    def record(self):
+        if self.recorded_name(self.text):
+            return self.text
+        return "# variant %s\n%s" % (self.name, self.text)
+
+
+def list_variants(template):
+    d = os.path.join(template, "variants")
+    return sorted(n for n in os.listdir(d) if VARIANT_NAME.match(n)) \
+        if os.path.isdir(d) else []
+
+
+def first_line_comment(path):
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") and not line.startswith("# variant "):
+                return line.lstrip("#").strip()
+    return ""
