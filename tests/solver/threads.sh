@@ -8,10 +8,6 @@
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 model="${2:-ErgunWenYu}"     # drag model (Beetstra: the cell mixture too)
-# Waiting threads sleep instead of spinning: on a busy machine a spinning
-# thread holds the core its descheduled partner needs, and 2 threads then
-# run tens of times slower (the results do not depend on it)
-export OMP_WAIT_POLICY=passive
 
 makeCase "$workDir/one"
 cd "$workDir/one" || fail "cd"
