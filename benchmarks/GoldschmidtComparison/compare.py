@@ -41,11 +41,12 @@ _spec = importlib.util.spec_from_loader(_loader.name, _loader)
 bedStats = importlib.util.module_from_spec(_spec)
 _loader.exec_module(bedStats)
 
-# The tutorial's bed (constant/kinematicCloudProperties, transportProperties,
-# blockMeshDict)
-N, D, RHO_P, RHO_G, G = 24750, 2.5e-3, 2526.0, 1.2, 9.81
-WIDTH, DEPTH, HEIGHT = 0.15, 0.015, 0.45
-WEIGHT_PER_AREA = N * np.pi / 6 * D ** 3 * (RHO_P - RHO_G) * G / (WIDTH * DEPTH)
+# The tutorial's spheres and gas (constant/kinematicCloudProperties,
+# transportProperties) and its box's depth and height (blockMeshDict); the
+# sphere count and the width are read from the run (Allrun's LATTICE_COLUMNS
+# and LATTICE_LAYERS cut them)
+D, RHO_P, RHO_G, G = 2.5e-3, 2526.0, 1.2, 9.81
+DEPTH, HEIGHT = 0.015, 0.45
 
 # README.md, "Tolerances" (fixed before the first long run)
 TOLERANCES = {                     # |DPMFoam - dpmFoam2D| / dpmFoam2D
@@ -64,6 +65,28 @@ SOLVERS = {
     "DPMFoam": ("alpha.air", 2, lambda p: RHO_G * p - RHO_G * G * HEIGHT),
     "dpmFoam2D": ("voidage", 1, lambda p: p),
 }
+
+
+def bed_size(run):
+    """(spheres, box width [m]) of the run's cases, which must agree: the
+    positions each case starts from, and the mesh's volume over depth x
+    height."""
+    sizes = {}
+    for name, positions, pattern in (
+            ("DPMFoam", "kinematicCloudPositions", r"^\(\S+ \S+ \S+\)\s*$"),
+            ("dpmFoam2D", "latticePositions", r"^\d+ \S+ \S+ \S+\s*$")):
+        case = os.path.join(run, name)
+        path = os.path.join(case, "constant", positions)
+        if not os.path.isfile(path):
+            continue
+        n = len(re.findall(pattern, open(path).read(), re.M))
+        _, V = ff.cell_geometry(case)
+        sizes[name] = (n, round(V.sum() / (DEPTH * HEIGHT), 6))
+    if len(set(sizes.values())) > 1:
+        sys.exit("%s: the cases hold different beds (spheres, width): %s" % (run, sizes))
+    if not sizes:
+        sys.exit("%s: no DPMFoam or dpmFoam2D case" % run)
+    return next(iter(sizes.values()))
 
 
 def pressure_record(case, convert):
@@ -183,6 +206,8 @@ def main():
                     help="s before the statistics (default 1, or half the run if shorter)")
     a = ap.parse_args()
 
+    n, width = bed_size(a.run)
+    weight_per_area = n * np.pi / 6 * D ** 3 * (RHO_P - RHO_G) * G / (width * DEPTH)
     stats = {}
     for name in SOLVERS:
         case = os.path.join(a.run, name)
@@ -195,8 +220,8 @@ def main():
         stats[name]["transient"] = transient
 
     print()
-    print("Goldschmidt slab: %d spheres of %g mm, W/A (weight less buoyancy per "
-          "area) %.1f Pa" % (N, 1e3 * D, WEIGHT_PER_AREA))
+    print("Goldschmidt slab: %d spheres of %g mm, %g mm wide, W/A (weight less buoyancy"
+          " per area) %.1f Pa" % (n, 1e3 * D, 1e3 * width, weight_per_area))
     for name, s in stats.items():
         print("%s:" % name)
         print("  wall time %.1f s for %.4g simulated s: %.0f wall s per simulated s"
@@ -213,7 +238,7 @@ def main():
         if "pressureDropMean" in s:
             print("  pressure drop  %.1f Pa (%.3f W/A), rms %.1f Pa; dominant frequency"
                   " %.2f Hz (bin %.2f Hz)"
-                  % (s["pressureDropMean"], s["pressureDropMean"] / WEIGHT_PER_AREA,
+                  % (s["pressureDropMean"], s["pressureDropMean"] / weight_per_area,
                      s["pressureDropRms"], s["frequency"], s["bin"]))
     if len(stats) < 2:
         return
@@ -242,7 +267,7 @@ def main():
                                           100 * allowed / abs(us[key]),
                                           "within" if good else "OUTSIDE"))
     for name, s in stats.items():
-        r = s["pressureDropMean"] / WEIGHT_PER_AREA - 1
+        r = s["pressureDropMean"] / weight_per_area - 1
         good = abs(r) <= PRESSURE_VS_WEIGHT
         ok &= good
         print("  %-9s mean pressure drop / (W/A) - 1 = %+.3f (tolerance %g): %s"
