@@ -130,6 +130,8 @@ def main():
         if not os.path.isdir(case):
             continue
         C, V = ff.cell_geometry(case)
+        if name == "dpmFoam2D":     # its cells as a [ny, nx] grid: one block of dx x dy
+            grid = np.lexsort((np.floor(C[:, 0] / dx), np.floor(C[:, 1] / dy))).reshape(ny, -1)
         f_all, c_all, beds = [], [], []
         worst = 0.0         # dpmFoam2D's field against the quadrature, per cell
         if name == "DPMFoam":
@@ -141,26 +143,22 @@ def main():
         for t, path in times[::a.every]:
             if name == "DPMFoam":
                 p, cell = dpmfoam_positions(path)
-                alpha = ff.internal_field(os.path.join(os.path.dirname(os.path.dirname(
-                    os.path.dirname(path))), "alpha.air"), len(V))
-                f_all.append(alpha[cell])
-                ours = np.column_stack([p[:, 1] + 0.075,
-                                        p[:, 2], p[:, 0] + compare.DEPTH / 2])
+                ours = np.column_stack([p[:, 1] + 0.075, p[:, 2], p[:, 0] + compare.DEPTH / 2])
             else:
-                q = pio.read_particles(path)
-                ours = q["position"].astype(float)
-                eps = ff.internal_field(os.path.join(case, pio.time_name(t), "voidage"), len(V))
-                # the cell of each centre: the mesh is a block of dx x dy cells
-                i = np.clip((ours[:, 0] / dx).astype(int), 0, int(round(width / dx)) - 1)
-                j = np.clip((ours[:, 1] / dy).astype(int), 0, ny - 1)
-                order = np.lexsort((np.floor(C[:, 0] / dx), np.floor(C[:, 1] / dy)))
-                f_all.append(eps[order].reshape(ny, -1)[j, i])
+                ours = pio.read_particles(path)["position"].astype(float)
             col = column_voidage(ours, width, dx, dy, ny, compare.DEPTH)
-            if name == "dpmFoam2D":
-                worst = max(worst, np.abs(col - eps[order].reshape(ny, -1)).max())
+            # each centre's column
             i = np.clip((ours[:, 0] / dx).astype(int), 0, col.shape[1] - 1)
             j = np.clip((ours[:, 1] / dy).astype(int), 0, ny - 1)
             c_all.append(col[j, i])
+            if name == "DPMFoam":
+                time_dir = path.rsplit(os.sep + "lagrangian" + os.sep, 1)[0]
+                f_all.append(ff.internal_field(os.path.join(time_dir, "alpha.air"), len(V))[cell])
+            else:
+                eps = ff.internal_field(os.path.join(case, pio.time_name(t), "voidage"),
+                                        len(V))[grid]
+                f_all.append(eps[j, i])
+                worst = max(worst, np.abs(col - eps).max())
             rows = col.mean(axis=1)
             top = np.nonzero(rows < 0.7)[0]
             beds.append(rows[:top[-1] + 1].mean() if len(top) else np.nan)
