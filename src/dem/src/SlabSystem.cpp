@@ -356,9 +356,11 @@ double SlabSystem::drift()
     const Arrays a(p_);
 
     double maxDisplacement2 = 0.0;
-    int lost = 0;
+    // Spheres outside the slab, counted in a double from a select: GCC vectorises that, and
+    // not an integer flag from comparisons
+    double lost = 0.0;
 #pragma omp parallel for simd num_threads(settings_.nThreads) schedule(static) \
-    reduction(max : maxDisplacement2) reduction(| : lost)
+    reduction(max : maxDisplacement2) reduction(+ : lost)
     for (Index i = 0; i < n; ++i) {
         const double invM = a.invMass[i];
         const double hI = h * a.invInertia[i];
@@ -375,9 +377,9 @@ double SlabSystem::drift()
         const double dy = a.y[i] - a.yRef[i];
         const double dz = a.z[i] - a.zRef[i];
         maxDisplacement2 = std::max(maxDisplacement2, dx * dx + dy * dy + dz * dz);
-        lost |= !insideSlab(a.x[i], a.y[i], a.z[i], b, depth);
+        lost += insideSlab(a.x[i], a.y[i], a.z[i], b, depth) ? 0.0 : 1.0;
     }
-    if (lost) throwLostParticle();
+    if (lost > 0.0) throwLostParticle();
     return maxDisplacement2;
 }
 
