@@ -4,6 +4,7 @@
 #include "dem/System.hpp"
 
 #include "PairGroups.hpp"
+#include "StreamingLoops.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -33,6 +34,7 @@ System::System(const Settings& settings)
                  settings.neighbourSkin < 0.0),
       timeStepBound_(dem::timeStepBound(settings))
 {
+    streamingLoops();   // a bad $DEM_SIMD is an error here, not inside a parallel loop
 }
 
 void System::addParticle(int cls, double x, double y, double vx, double vy, double omega)
@@ -172,6 +174,14 @@ void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
     double* torqueA = p.torque.data();
     const double* radius = p.radius.data();
 
+    const KickArrays kickArrays{
+        wStart,          fxA,           fyA,           radius,      p.invMass.data(),
+        p.invInertia.data(), p.dragCoefficient.data(), p.gasVx.data(), p.gasVy.data(),
+        p.extraFx.data(), p.extraFy.data(), torqueA,  p.vx.data(),  p.vy.data(),
+        p.omega.data(),  p.fluidX.data(), p.fluidY.data(), p.meanVx.data(), p.meanVy.data()};
+
+    const KickLoop kickLoop = streamingLoops().secondHalfKick;
+
     std::size_t touching = 0;
     double maxOverlap = maxOverlap_;
 #pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
@@ -222,10 +232,8 @@ void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
             fyA[i] = fy;
             torqueA[i] = torque;
         }
-        if (kick && fluid) {
-            kickLoop<true>(first, last, h, gx, gy, weight);
-        } else if (kick) {
-            kickLoop<false>(first, last, h, gx, gy, weight);
+        if (kick) {
+            kickLoop(kickArrays, first, last, h, gx, gy, weight, fluid);
         } else {
 #pragma omp simd
             for (Index i = first; i < last; ++i) {
@@ -239,111 +247,24 @@ void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
     maxOverlap_ = maxOverlap;
 }
 
-template <bool Fluid>
-void System::kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, double gx, double gy,
-                      double weight)
-{
-    Particles& p = p_;
-    const int* wStart = wallContacts_.start.data();
-    const double* fx = p.fx.data();
-    const double* fy = p.fy.data();
-    double* torqueA = p.torque.data();
-    const double* radius = p.radius.data();
-    const double* invMass = p.invMass.data();
-    const double* invInertia = p.invInertia.data();
-    const double* dragK = p.dragCoefficient.data();
-    const double* gasVx = p.gasVx.data();
-    const double* gasVy = p.gasVy.data();
-    const double* extraFx = p.extraFx.data();
-    const double* extraFy = p.extraFy.data();
-    double* vx = p.vx.data();
-    double* vy = p.vy.data();
-    double* omega = p.omega.data();
-    double* fluidX = p.fluidX.data();
-    double* fluidY = p.fluidY.data();
-    double* meanVx = p.meanVx.data();
-    double* meanVy = p.meanVy.data();
-#pragma omp simd
-    for (Index i = first; i < last; ++i) {
-        // Particles with walls have their whole torque already (the loop before): a factor
-        // of 1 keeps it exactly, and a select of loaded values vectorises
-        const double ri = radius[i];
-        const double torque = (wStart[i] == wStart[i + 1] ? ri : 1.0) * torqueA[i];
-        torqueA[i] = torque;
-        const double invM = invMass[i];
-        if constexpr (Fluid) {
-            // Second half-kick with the drag implicit: v = v_half + h (F + K (u - v) + extra)/m.
-            const double K = dragK[i];
-            const double denominator = 1.0 + h * K * invM;
-            const double vxNew = (vx[i] + h * ((fx[i] + K * gasVx[i] + extraFx[i]) * invM + gx))
-                                 / denominator;
-            const double vyNew = (vy[i] + h * ((fy[i] + K * gasVy[i] + extraFy[i]) * invM + gy))
-                                 / denominator;
-            vx[i] = vxNew;
-            vy[i] = vyNew;
-            fluidX[i] = K * (gasVx[i] - vxNew) + extraFx[i];
-            fluidY[i] = K * (gasVy[i] - vyNew) + extraFy[i];
-            meanVx[i] += weight * vxNew;
-            meanVy[i] += weight * vyNew;
-        } else {
-            vx[i] += h * (fx[i] * invM + gx);
-            vy[i] += h * (fy[i] * invM + gy);
-        }
-        omega[i] += h * torque * invInertia[i];
-    }
-}
-
 double System::drift()
 {
     const Index n = static_cast<Index>(p_.size());
-    const double dt = settings_.dt;
-    const double h = 0.5 * dt;
-    const double gx = settings_.gravity[0];
-    const double gy = settings_.gravity[1];
-    const Box& b = settings_.box;
-    const double xMin = b.xMin, xMax = b.xMax, yMin = b.yMin, yMax = b.yMax;
-    // Plain pointers and a box test without branches: GCC vectorises the loop (with the
-    // vectors' members it spilled the pointers and branched on every comparison).
+    const DriftStep c{settings_.dt, 0.5 * settings_.dt, settings_.gravity[0],
+                      settings_.gravity[1], settings_.box};
     Particles& p = p_;
-    const double* invMass = p.invMass.data();
-    const double* invInertia = p.invInertia.data();
-    const double* fx = p.fx.data();
-    const double* fy = p.fy.data();
-    const double* fluidX = p.fluidX.data();
-    const double* fluidY = p.fluidY.data();
-    const double* torque = p.torque.data();
-    const double* xRef = p.xRef.data();
-    const double* yRef = p.yRef.data();
-    double* vx = p.vx.data();
-    double* vy = p.vy.data();
-    double* omega = p.omega.data();
-    double* x = p.x.data();
-    double* y = p.y.data();
-
+    const DriftArrays a{p.invMass.data(), p.invInertia.data(), p.fx.data(),     p.fy.data(),
+                        p.fluidX.data(),  p.fluidY.data(),     p.torque.data(), p.xRef.data(),
+                        p.yRef.data(),    p.vx.data(),         p.vy.data(),     p.omega.data(),
+                        p.x.data(),       p.y.data()};
+    const DriftLoop driftLoop = streamingLoops().firstHalfKickAndDrift;
     double maxDisplacement2 = 0.0;
-    // Particles outside the box, counted in a double from selects: GCC vectorises that, and
-    // not an integer flag from comparisons
     double lost = 0.0;
-#pragma omp parallel for simd num_threads(settings_.nThreads) schedule(static) \
-    reduction(max : maxDisplacement2) reduction(+ : lost)
-    for (Index i = 0; i < n; ++i) {
-        const double invM = invMass[i];
-        const double vxNew = vx[i] + h * ((fx[i] + fluidX[i]) * invM + gx);
-        const double vyNew = vy[i] + h * ((fy[i] + fluidY[i]) * invM + gy);
-        vx[i] = vxNew;
-        vy[i] = vyNew;
-        omega[i] += h * torque[i] * invInertia[i];
-        const double xNew = x[i] + dt * vxNew;
-        const double yNew = y[i] + dt * vyNew;
-        x[i] = xNew;
-        y[i] = yNew;
-        const double dx = xNew - xRef[i];
-        const double dy = yNew - yRef[i];
-        maxDisplacement2 = std::max(maxDisplacement2, dx * dx + dy * dy);
-        // Written so that NaN counts as lost too.
-        const double outX = xNew >= xMin && xNew <= xMax ? 0.0 : 1.0;
-        const double outY = yNew >= yMin && yNew <= yMax ? 0.0 : 1.0;
-        lost += outX + outY;
+#pragma omp parallel num_threads(settings_.nThreads) reduction(max : maxDisplacement2) \
+    reduction(+ : lost)
+    {
+        const auto [first, last] = threadShare(n);
+        driftLoop(a, c, first, last, maxDisplacement2, lost);
     }
     if (lost > 0.0) throwLostParticle();
     return maxDisplacement2;

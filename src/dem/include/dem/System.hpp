@@ -75,10 +75,6 @@ private:
     /// Adds the wall contacts to the pair sums and does the second half-kick (kick = false:
     /// only the forces, for the first evaluation).
     void addWallForcesAndKick(double historyDt, bool kick, bool fluid);
-    /// The second half-kick of particles [first, last).
-    template <bool Fluid>
-    void kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, double gx, double gy,
-                  double weight);
     [[noreturn]] void throwLostParticle() const;
 
     static constexpr double skinStartFraction = 0.4;   // of d_min, the adaptive skin's start

@@ -1,0 +1,66 @@
+#pragma once
+// The 2D engine's loops that stream through the particle arrays, one particle at a time: the
+// first half-kick with the drift, and the second half-kick (internal to the library).
+//
+// Compiled twice, for AVX2 (4 doubles a vector) and for the baseline x86-64 (SSE2, 2
+// doubles), and picked at run time: AVX2 where the CPU has it, unless the environment
+// variable DEM_SIMD says baseline; the build stays portable. Neither version fuses
+// multiply-adds (AVX2 without FMA), so both do the same IEEE operations per particle: the
+// same bits (dem.StreamingLoops.AvxGivesTheBaselineBits).
+
+#include "dem/Facade.hpp"   // Box
+
+#include <cstddef>
+
+namespace dem {
+
+struct DriftArrays {
+    const double *invMass, *invInertia, *fx, *fy, *fluidX, *fluidY, *torque, *xRef, *yRef;
+    double *vx, *vy, *omega, *x, *y;
+};
+
+struct DriftStep {
+    double dt, h, gx, gy;   ///< time step, half of it, gravity
+    Box box;
+};
+
+/// v += h (F + F_fluid)/m + h g, omega += h T/I, x += dt v for particles [first, last);
+/// raises maxDisplacement2 to the largest squared distance from (xRef, yRef) and adds to
+/// lost the particles outside the box (NaN counts as outside).
+using DriftLoop = void (*)(const DriftArrays& a, const DriftStep& c, std::ptrdiff_t first,
+                          std::ptrdiff_t last, double& maxDisplacement2, double& lost);
+
+struct KickArrays {
+    const int* wallStart;   ///< the wall list's start: particles with walls have their torque
+    const double *fx, *fy, *radius, *invMass, *invInertia, *dragK, *gasVx, *gasVy, *extraFx,
+        *extraFy;
+    double *torque, *vx, *vy, *omega, *fluidX, *fluidY, *meanVx, *meanVy;
+};
+
+/// The second half-kick of particles [first, last): with the drag implicit and the sub-step
+/// means (fluid), or forces and gravity only. torque holds the sum of tangential forces of
+/// a particle without wall candidates (times its radius here) and the whole torque of one
+/// with them.
+using KickLoop = void (*)(const KickArrays& a, std::ptrdiff_t first, std::ptrdiff_t last,
+                         double h, double gx, double gy, double weight, bool fluid);
+
+enum class SimdLevel { baseline, avx2 };
+
+struct StreamingLoops {
+    SimdLevel level;
+    DriftLoop firstHalfKickAndDrift;
+    KickLoop secondHalfKick;
+};
+
+/// Whether this CPU runs the AVX2 version.
+bool cpuHasAvx2();
+
+/// The loops of one level; throws dem::Error for avx2 on a CPU without it.
+const StreamingLoops& streamingLoops(SimdLevel level);
+
+/// The loops in use, chosen once: $DEM_SIMD = baseline or avx2 if set (anything else, or
+/// avx2 on a CPU without it, throws dem::Error naming the variable), else the best the CPU
+/// has.
+const StreamingLoops& streamingLoops();
+
+} // namespace dem
