@@ -10,6 +10,10 @@
 #include <cmath>
 #include <type_traits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace dem {
 
 /// Types of one dimension: in 2D spin, torque and the tangential history are scalars (about
@@ -48,6 +52,18 @@ using PairForce = PairForceT<2>;
 using PairGeometry3 = PairGeometryT<3>;
 using PairForce3 = PairForceT<3>;
 
+/// c ? a : b with a mask instead of the jump GCC makes of the conditional.
+inline double selectWithoutBranch(bool c, double a, double b)
+{
+#if defined(__SSE2__)
+    const __m128d mask = _mm_castsi128_pd(_mm_set1_epi64x(-static_cast<long long>(c)));
+    return _mm_cvtsd_f64(_mm_or_pd(_mm_and_pd(mask, _mm_set_sd(a)),
+                                   _mm_andnot_pd(mask, _mm_set_sd(b))));
+#else
+    return c ? a : b;
+#endif
+}
+
 /// Normal force magnitude kn delta + etaN vn (vn > 0 approaching); F_n = -fn nHat on i.
 /// No clamp of the tensile part near the end of the contact: the exact restitution of
 /// eta_n(e) assumes the unclamped law.
@@ -75,19 +91,21 @@ template <int Dim>
 {
     PairForceT<Dim> out;
     if constexpr (Dim == 2) {
-        // The order of the operations of the 2D code before the 3D mode, so that the
-        // compiler emits the same instructions.
+        // The operations and their order of the 2D code before the 3D mode: the same bits.
         const Eigen::Vector2d tHat(-g.nHat.y(), g.nHat.x());
         const double vn = g.vRel.dot(g.nHat);     // > 0 approaching
         const double vt = g.vRel.dot(tHat);
         const double fn = normalForce(g.overlap, vn, law);
-        double xiT = g.xiT + vt * dt;
-        double ft = -law.kt * xiT - law.etaT * vt;
+        const double xiTrial = g.xiT + vt * dt;
+        const double trial = -law.kt * xiTrial - law.etaT * vt;
         const double limit = law.mu * std::abs(fn);
-        if (std::abs(ft) > limit) {
-            ft = std::copysign(limit, ft);
-            xiT = -ft / law.kt;
-        }
+        // Sliding picked without a branch, both outcomes computed: contacts start and end
+        // sliding unpredictably in a bubbling bed
+        const double capped = std::copysign(limit, trial);
+        const double xiCapped = -capped / law.kt;
+        const bool slides = std::abs(trial) > limit;
+        const double ft = selectWithoutBranch(slides, capped, trial);
+        const double xiT = selectWithoutBranch(slides, xiCapped, xiTrial);
         out.force = -fn * g.nHat + ft * tHat;
         // T = (r nHat) x (ft tHat) = r ft ez for both partners (nHat x tHat = ez).
         out.torqueI = g.rI * ft;
