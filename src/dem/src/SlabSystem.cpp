@@ -209,9 +209,9 @@ void SlabSystem::computePairForces(double historyDt)
             picked[m] = k;
             m += touch;
             double* xi = xiT[k].data();   // separated: the contact's history ends
-            xi[0] = touch ? xi[0] : 0.0;
-            xi[1] = touch ? xi[1] : 0.0;
-            xi[2] = touch ? xi[2] : 0.0;
+            xi[0] = selectWithoutBranch(touch, xi[0], 0.0);
+            xi[1] = selectWithoutBranch(touch, xi[1], 0.0);
+            xi[2] = selectWithoutBranch(touch, xi[2], 0.0);
         }
         for (int q = 0; q < m; ++q) pairForce(picked[q], touching, maxOverlap);
     };

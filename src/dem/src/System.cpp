@@ -143,7 +143,7 @@ void System::computePairForces(double historyDt)
             picked[m] = k;
             m += touch;
             const double xi = xiT[k];
-            xiT[k] = touch ? xi : 0.0;   // separated: the contact's history ends
+            xiT[k] = selectWithoutBranch(touch, xi, 0.0);   // separated: the history ends
         }
         for (int q = 0; q < m; ++q) pairForce(picked[q], touching, maxOverlap);
     };
