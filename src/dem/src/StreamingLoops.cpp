@@ -4,6 +4,7 @@
 #include "StreamingLoops.hpp"
 
 #include "dem/Error.hpp"
+#include "dem/Facade.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -194,6 +195,11 @@ const StreamingLoops& streamingLoops()
 {
     static const StreamingLoops& chosen = chosenLoops();
     return chosen;
+}
+
+std::string streamingLoopsInUse()
+{
+    return streamingLoops().level == SimdLevel::avx2 ? "avx2" : "baseline";
 }
 
 } // namespace dem
