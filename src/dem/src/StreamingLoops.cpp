@@ -20,43 +20,30 @@ namespace {
 
 using Index = std::ptrdiff_t;
 
-[[gnu::always_inline]] inline void driftBody(const DriftArrays& a, const DriftStep& c,
+// The arrays by value: the loops see plain local pointers
+[[gnu::always_inline]] inline void driftBody(const DriftArrays a, const DriftStep& c,
                                              Index first, Index last, double& maxDisplacement2,
                                              double& lost)
 {
     const double dt = c.dt, h = c.h, gx = c.gx, gy = c.gy;
     const double xMin = c.box.xMin, xMax = c.box.xMax, yMin = c.box.yMin, yMax = c.box.yMax;
-    const double* invMass = a.invMass;
-    const double* invInertia = a.invInertia;
-    const double* fx = a.fx;
-    const double* fy = a.fy;
-    const double* fluidX = a.fluidX;
-    const double* fluidY = a.fluidY;
-    const double* torque = a.torque;
-    const double* xRef = a.xRef;
-    const double* yRef = a.yRef;
-    double* vx = a.vx;
-    double* vy = a.vy;
-    double* omega = a.omega;
-    double* x = a.x;
-    double* y = a.y;
     double maxD2 = maxDisplacement2;
     // Counted in a double from selects: GCC vectorises that, and not an integer flag
     double outside = lost;
 #pragma omp simd reduction(max : maxD2) reduction(+ : outside)
     for (Index i = first; i < last; ++i) {
-        const double invM = invMass[i];
-        const double vxNew = vx[i] + h * ((fx[i] + fluidX[i]) * invM + gx);
-        const double vyNew = vy[i] + h * ((fy[i] + fluidY[i]) * invM + gy);
-        vx[i] = vxNew;
-        vy[i] = vyNew;
-        omega[i] += h * torque[i] * invInertia[i];
-        const double xNew = x[i] + dt * vxNew;
-        const double yNew = y[i] + dt * vyNew;
-        x[i] = xNew;
-        y[i] = yNew;
-        const double dx = xNew - xRef[i];
-        const double dy = yNew - yRef[i];
+        const double invM = a.invMass[i];
+        const double vxNew = a.vx[i] + h * ((a.fx[i] + a.fluidX[i]) * invM + gx);
+        const double vyNew = a.vy[i] + h * ((a.fy[i] + a.fluidY[i]) * invM + gy);
+        a.vx[i] = vxNew;
+        a.vy[i] = vyNew;
+        a.omega[i] += h * a.torque[i] * a.invInertia[i];
+        const double xNew = a.x[i] + dt * vxNew;
+        const double yNew = a.y[i] + dt * vyNew;
+        a.x[i] = xNew;
+        a.y[i] = yNew;
+        const double dx = xNew - a.xRef[i];
+        const double dy = yNew - a.yRef[i];
         maxD2 = std::max(maxD2, dx * dx + dy * dy);
         const double outX = xNew >= xMin && xNew <= xMax ? 0.0 : 1.0;
         const double outY = yNew >= yMin && yNew <= yMax ? 0.0 : 1.0;
@@ -66,65 +53,47 @@ using Index = std::ptrdiff_t;
     lost = outside;
 }
 
-[[gnu::always_inline]] inline void kickBody(const KickArrays& a, Index first, Index last,
+[[gnu::always_inline]] inline void kickBody(const KickArrays a, Index first, Index last,
                                             double h, double gx, double gy, double weight,
                                             bool fluid)
 {
-    const int* wStart = a.wallStart;
-    const double* fx = a.fx;
-    const double* fy = a.fy;
-    const double* radius = a.radius;
-    const double* invMass = a.invMass;
-    const double* invInertia = a.invInertia;
-    const double* dragK = a.dragK;
-    const double* gasVx = a.gasVx;
-    const double* gasVy = a.gasVy;
-    const double* extraFx = a.extraFx;
-    const double* extraFy = a.extraFy;
-    double* torqueA = a.torque;
-    double* vx = a.vx;
-    double* vy = a.vy;
-    double* omega = a.omega;
-    double* fluidX = a.fluidX;
-    double* fluidY = a.fluidY;
-    double* meanVx = a.meanVx;
-    double* meanVy = a.meanVy;
     if (fluid) {
 #pragma omp simd
         for (Index i = first; i < last; ++i) {
             // Particles with walls have their whole torque already: a factor of 1 keeps it
             // exactly, and a select of loaded values vectorises
-            const double torque = (wStart[i] == wStart[i + 1] ? radius[i] : 1.0) * torqueA[i];
-            torqueA[i] = torque;
-            const double invM = invMass[i];
-            // Second half-kick with the drag implicit: v = v_half + h (F + K (u - v) + extra)/m.
-            const double K = dragK[i];
+            const double scale = a.wallStart[i] == a.wallStart[i + 1] ? a.radius[i] : 1.0;
+            const double torque = scale * a.torque[i];
+            a.torque[i] = torque;
+            const double invM = a.invMass[i];
+            // Second half-kick, the drag implicit: v = v_half + h (F + K (u - v) + extra)/m.
+            const double K = a.dragK[i];
             const double denominator = 1.0 + h * K * invM;
-            const double vxNew = (vx[i] + h * ((fx[i] + K * gasVx[i] + extraFx[i]) * invM + gx))
-                                 / denominator;
-            const double vyNew = (vy[i] + h * ((fy[i] + K * gasVy[i] + extraFy[i]) * invM + gy))
-                                 / denominator;
-            vx[i] = vxNew;
-            vy[i] = vyNew;
-            fluidX[i] = K * (gasVx[i] - vxNew) + extraFx[i];
-            fluidY[i] = K * (gasVy[i] - vyNew) + extraFy[i];
-            meanVx[i] += weight * vxNew;
-            meanVy[i] += weight * vyNew;
-            omega[i] += h * torque * invInertia[i];
+            const double ax = (a.fx[i] + K * a.gasVx[i] + a.extraFx[i]) * invM + gx;
+            const double ay = (a.fy[i] + K * a.gasVy[i] + a.extraFy[i]) * invM + gy;
+            const double vxNew = (a.vx[i] + h * ax) / denominator;
+            const double vyNew = (a.vy[i] + h * ay) / denominator;
+            a.vx[i] = vxNew;
+            a.vy[i] = vyNew;
+            a.fluidX[i] = K * (a.gasVx[i] - vxNew) + a.extraFx[i];
+            a.fluidY[i] = K * (a.gasVy[i] - vyNew) + a.extraFy[i];
+            a.meanVx[i] += weight * vxNew;
+            a.meanVy[i] += weight * vyNew;
+            a.omega[i] += h * torque * a.invInertia[i];
         }
     } else {
 #pragma omp simd
         for (Index i = first; i < last; ++i) {
-            const double torque = (wStart[i] == wStart[i + 1] ? radius[i] : 1.0) * torqueA[i];
-            torqueA[i] = torque;
-            const double invM = invMass[i];
-            vx[i] += h * (fx[i] * invM + gx);
-            vy[i] += h * (fy[i] * invM + gy);
-            omega[i] += h * torque * invInertia[i];
+            const double scale = a.wallStart[i] == a.wallStart[i + 1] ? a.radius[i] : 1.0;
+            const double torque = scale * a.torque[i];
+            a.torque[i] = torque;
+            const double invM = a.invMass[i];
+            a.vx[i] += h * (a.fx[i] * invM + gx);
+            a.vy[i] += h * (a.fy[i] * invM + gy);
+            a.omega[i] += h * torque * a.invInertia[i];
         }
     }
 }
-
 
 void driftBaseline(const DriftArrays& a, const DriftStep& c, Index first, Index last,
                    double& maxDisplacement2, double& lost)
