@@ -53,6 +53,17 @@ using Index = std::ptrdiff_t;
     lost = outside;
 }
 
+// Particle i's torque made whole and stored: one with wall candidates has it already (a
+// factor of 1 keeps it exactly, and a select of loaded values vectorises), the others the
+// sum of their tangential forces, times the radius here
+[[gnu::always_inline]] inline double wholeTorque(const KickArrays& a, Index i)
+{
+    const double scale = a.wallStart[i] == a.wallStart[i + 1] ? a.radius[i] : 1.0;
+    const double torque = scale * a.torque[i];
+    a.torque[i] = torque;
+    return torque;
+}
+
 [[gnu::always_inline]] inline void kickBody(const KickArrays a, Index first, Index last,
                                             double h, double gx, double gy, double weight,
                                             bool fluid)
@@ -60,11 +71,7 @@ using Index = std::ptrdiff_t;
     if (fluid) {
 #pragma omp simd
         for (Index i = first; i < last; ++i) {
-            // Particles with walls have their whole torque already: a factor of 1 keeps it
-            // exactly, and a select of loaded values vectorises
-            const double scale = a.wallStart[i] == a.wallStart[i + 1] ? a.radius[i] : 1.0;
-            const double torque = scale * a.torque[i];
-            a.torque[i] = torque;
+            const double torque = wholeTorque(a, i);
             const double invM = a.invMass[i];
             // Second half-kick, the drag implicit: v = v_half + h (F + K (u - v) + extra)/m.
             const double K = a.dragK[i];
@@ -84,9 +91,7 @@ using Index = std::ptrdiff_t;
     } else {
 #pragma omp simd
         for (Index i = first; i < last; ++i) {
-            const double scale = a.wallStart[i] == a.wallStart[i + 1] ? a.radius[i] : 1.0;
-            const double torque = scale * a.torque[i];
-            a.torque[i] = torque;
+            const double torque = wholeTorque(a, i);
             const double invM = a.invMass[i];
             a.vx[i] += h * (a.fx[i] * invM + gx);
             a.vy[i] += h * (a.fy[i] * invM + gy);
