@@ -198,7 +198,8 @@ void SlabSystem::computePairForces(double historyDt)
     auto group = [&](int gr, std::size_t& touching, double& maxOverlap) {
         int* picked = touchingPairs + groupStart[gr];
         int m = 0;
-        for (int k = groupStart[gr]; k < groupStart[gr + 1]; ++k) {
+        const int end = groupStart[gr + 1];   // read once: the picks are ints too
+        for (int k = groupStart[gr]; k < end; ++k) {
             const int i = pi[k];
             const int j = pj[k];
             const double dx = a.x[j] - a.x[i];

@@ -133,7 +133,8 @@ void System::computePairForces(double historyDt)
     auto group = [&](int g, std::size_t& touching, double& maxOverlap) {
         int* picked = touchingPairs + groupStart[g];
         int m = 0;
-        for (int k = groupStart[g]; k < groupStart[g + 1]; ++k) {
+        const int end = groupStart[g + 1];   // read once: the picks are ints too
+        for (int k = groupStart[g]; k < end; ++k) {
             const int i = pi[k];
             const int j = pj[k];
             const double dx = x[j] - x[i];
