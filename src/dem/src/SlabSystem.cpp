@@ -236,46 +236,56 @@ void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
     const ContactLaw* wallLaws = wallLaws_.data();
     SlabParticles& p = p_;
 
+    wallScratch_.resize(2 * wallContacts_.size());
+
     std::size_t touching = 0;
     double maxOverlap = maxOverlap_;
 #pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
     reduction(max : maxOverlap)
     {
-        // As System's: each thread its own range of particles for both loops; the few
-        // particles with wall candidates first (their wall forces added to the pair sums in
-        // wall order, their torque made whole), then every particle's kick, vectorised.
+        // As System's: each thread its own range of particles for every loop (no barrier
+        // between them), the wall contacts first, then every particle's kick, vectorised.
         const auto [first, last] = threadShare(n);
+        // Two passes, as the pair loop's: the touching wall contacts picked out without a
+        // jump (every sphere of a thin slab has the front and back walls as candidates, and
+        // a jump on touching mispredicted), each particle's torque made whole (r ft + the
+        // wall torques); then the touching contacts' forces and torques, added in wall order
+        int* pickedSlot = wallScratch_.data() + 2 * wStart[first];
+        int* pickedParticle = pickedSlot + 1;
+        int m = 0;
         for (Index i = first; i < last; ++i) {
             if (wStart[i] == wStart[i + 1]) continue;
             const double ri = p.radius[i];
-            Vec3 force(p.fx[i], p.fy[i], p.fz[i]);
-            Vec3 torque = ri * Vec3(p.tx[i], p.ty[i], p.tz[i]);
+            p.tx[i] *= ri;
+            p.ty[i] *= ri;
+            p.tz[i] *= ri;
             const Vec3 pos = p.position(i);
-            const Vec3 v = p.velocity(i);
-            const Vec3 w = p.spin(i);
             for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
-                const PlaneWall3& wall = walls[wWall[s]];
-                const double overlap = ri - wall.distance(pos);
-                if (overlap <= 0.0) {
-                    wXi[s].setZero();
-                    continue;
-                }
-                PairGeometry3 c;
-                c.overlap = overlap;
-                c.nHat = -wall.nHat;
-                c.vRel = v + (ri * w).cross(c.nHat);
-                c.rI = ri;
-                c.rJ = 0.0;
-                c.xiT = wXi[s];
-                const PairForce3 f = contactForce(c, wallLaws[p.classIndex[i]], historyDt);
-                force += f.force;
-                torque += f.torqueI;
-                wXi[s] = f.xiT;
-                ++touching;
-                maxOverlap = std::max(maxOverlap, overlap);
+                const bool touch = !(ri - walls[wWall[s]].distance(pos) <= 0.0);
+                pickedSlot[2 * m] = s;
+                pickedParticle[2 * m] = static_cast<int>(i);
+                m += touch;
+                wXi[s] = selectWithoutBranch(touch, wXi[s], Vec3::Zero());
             }
-            p.fx[i] = force.x(); p.fy[i] = force.y(); p.fz[i] = force.z();
-            p.tx[i] = torque.x(); p.ty[i] = torque.y(); p.tz[i] = torque.z();
+        }
+        for (int q = 0; q < m; ++q) {
+            const int s = pickedSlot[2 * q];
+            const int i = pickedParticle[2 * q];
+            const double ri = p.radius[i];
+            const PlaneWall3& wall = walls[wWall[s]];
+            PairGeometry3 c;
+            c.overlap = ri - wall.distance(p.position(i));
+            c.nHat = -wall.nHat;
+            c.vRel = p.velocity(i) + (ri * p.spin(i)).cross(c.nHat);
+            c.rI = ri;
+            c.rJ = 0.0;
+            c.xiT = wXi[s];
+            const PairForce3 f = contactForce(c, wallLaws[p.classIndex[i]], historyDt);
+            p.fx[i] += f.force.x(); p.fy[i] += f.force.y(); p.fz[i] += f.force.z();
+            p.tx[i] += f.torqueI.x(); p.ty[i] += f.torqueI.y(); p.tz[i] += f.torqueI.z();
+            wXi[s] = f.xiT;
+            ++touching;
+            maxOverlap = std::max(maxOverlap, c.overlap);
         }
         if (kick && fluid) {
             kickLoop<true, true>(first, last, h, weight);

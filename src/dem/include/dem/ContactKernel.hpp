@@ -64,6 +64,14 @@ inline double selectWithoutBranch(bool c, double a, double b)
 #endif
 }
 
+/// The same for each component of a 3-vector.
+inline Eigen::Vector3d selectWithoutBranch(bool c, const Eigen::Vector3d& a,
+                                           const Eigen::Vector3d& b)
+{
+    return {selectWithoutBranch(c, a.x(), b.x()), selectWithoutBranch(c, a.y(), b.y()),
+            selectWithoutBranch(c, a.z(), b.z())};
+}
+
 /// Normal force magnitude kn delta + etaN vn (vn > 0 approaching); F_n = -fn nHat on i.
 /// No clamp of the tensile part near the end of the contact: the exact restitution of
 /// eta_n(e) assumes the unclamped law.

@@ -139,6 +139,7 @@ private:
     [[noreturn]] void throwLostParticle() const;
 
     std::vector<int> touchingScratch_;   // the touching pairs of each group, per step
+    std::vector<int> wallScratch_;       // the touching wall contacts: (slot, particle) pairs
 };
 
 } // namespace dem
