@@ -236,7 +236,7 @@ void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
     const ContactLaw* wallLaws = wallLaws_.data();
     SlabParticles& p = p_;
 
-    wallScratch_.resize(2 * wallContacts_.size());
+    wallPicks_.resize(wallContacts_.size());
 
     std::size_t touching = 0;
     double maxOverlap = maxOverlap_;
@@ -250,8 +250,7 @@ void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
         // jump (every sphere of a thin slab has the front and back walls as candidates, and
         // a jump on touching mispredicted), each particle's torque made whole (r ft + the
         // wall torques); then the touching contacts' forces and torques, added in wall order
-        int* pickedSlot = wallScratch_.data() + 2 * wStart[first];
-        int* pickedParticle = pickedSlot + 1;
+        WallPick* picked = wallPicks_.data() + wStart[first];
         int m = 0;
         for (Index i = first; i < last; ++i) {
             if (wStart[i] == wStart[i + 1]) continue;
@@ -262,15 +261,13 @@ void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
             const Vec3 pos = p.position(i);
             for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
                 const bool touch = !(ri - walls[wWall[s]].distance(pos) <= 0.0);
-                pickedSlot[2 * m] = s;
-                pickedParticle[2 * m] = static_cast<int>(i);
+                picked[m] = {s, static_cast<int>(i)};
                 m += touch;
                 wXi[s] = selectWithoutBranch(touch, wXi[s], Vec3::Zero());
             }
         }
         for (int q = 0; q < m; ++q) {
-            const int s = pickedSlot[2 * q];
-            const int i = pickedParticle[2 * q];
+            const auto [s, i] = picked[q];
             const double ri = p.radius[i];
             const PlaneWall3& wall = walls[wWall[s]];
             PairGeometry3 c;

@@ -66,9 +66,9 @@ using Index = std::ptrdiff_t;
 
 [[gnu::always_inline]] inline void kickBody(const KickArrays a, Index first, Index last,
                                             double h, double gx, double gy, double weight,
-                                            bool fluid)
+                                            KickMode mode)
 {
-    if (fluid) {
+    if (mode == KickMode::fluid) {
 #pragma omp simd
         for (Index i = first; i < last; ++i) {
             const double torque = wholeTorque(a, i);
@@ -88,7 +88,7 @@ using Index = std::ptrdiff_t;
             a.meanVy[i] += weight * vyNew;
             a.omega[i] += h * torque * a.invInertia[i];
         }
-    } else {
+    } else if (mode == KickMode::forcesOnly) {
 #pragma omp simd
         for (Index i = first; i < last; ++i) {
             const double torque = wholeTorque(a, i);
@@ -97,6 +97,9 @@ using Index = std::ptrdiff_t;
             a.vy[i] += h * (a.fy[i] * invM + gy);
             a.omega[i] += h * torque * a.invInertia[i];
         }
+    } else {
+#pragma omp simd
+        for (Index i = first; i < last; ++i) wholeTorque(a, i);
     }
 }
 
@@ -107,9 +110,9 @@ void driftBaseline(const DriftArrays& a, const DriftStep& c, Index first, Index 
 }
 
 void kickBaseline(const KickArrays& a, Index first, Index last, double h, double gx, double gy,
-                  double weight, bool fluid)
+                  double weight, KickMode mode)
 {
-    kickBody(a, first, last, h, gx, gy, weight, fluid);
+    kickBody(a, first, last, h, gx, gy, weight, mode);
 }
 
 #ifdef DEM_HAVE_AVX2_LOOPS
@@ -122,9 +125,9 @@ __attribute__((target("avx2"))) void driftAvx2(const DriftArrays& a, const Drift
 
 __attribute__((target("avx2"))) void kickAvx2(const KickArrays& a, Index first, Index last,
                                               double h, double gx, double gy, double weight,
-                                              bool fluid)
+                                              KickMode mode)
 {
-    kickBody(a, first, last, h, gx, gy, weight, fluid);
+    kickBody(a, first, last, h, gx, gy, weight, mode);
 }
 #endif
 

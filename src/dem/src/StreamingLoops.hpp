@@ -37,12 +37,16 @@ struct KickArrays {
     double *torque, *vx, *vy, *omega, *fluidX, *fluidY, *meanVx, *meanVy;
 };
 
-/// The second half-kick of particles [first, last): with the drag implicit and the sub-step
-/// means (fluid), or forces and gravity only. torque holds the sum of tangential forces of
-/// a particle without wall candidates (times its radius here) and the whole torque of one
-/// with them.
+/// What the second half-kick does besides making the torque whole: kick with the drag
+/// implicit and the sub-step means, kick with the forces and gravity only, or nothing more
+/// (the first force evaluation).
+enum class KickMode { fluid, forcesOnly, torqueOnly };
+
+/// The second half-kick of particles [first, last). torque holds the sum of tangential
+/// forces of a particle without wall candidates (times its radius here) and the whole torque
+/// of one with them.
 using KickLoop = void (*)(const KickArrays& a, std::ptrdiff_t first, std::ptrdiff_t last,
-                         double h, double gx, double gy, double weight, bool fluid);
+                         double h, double gx, double gy, double weight, KickMode mode);
 
 enum class SimdLevel { baseline, avx2 };
 

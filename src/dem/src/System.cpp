@@ -169,7 +169,7 @@ void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
     const PlaneWall* walls = walls_.data();
     const ContactLaw* wallLaws = wallLaws_.data();
     Particles& p = p_;
-    // Plain pointers: the kick loop below is a simd loop, which needs no alias checks.
+    // Plain pointers, for the wall loop and the kick's arrays
     double* fxA = p.fx.data();
     double* fyA = p.fy.data();
     double* torqueA = p.torque.data();
@@ -182,6 +182,9 @@ void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
         p.omega.data(),  p.fluidX.data(), p.fluidY.data(), p.meanVx.data(), p.meanVy.data()};
 
     const KickLoop kickLoop = streamingLoops().secondHalfKick;
+    const KickMode mode = !kick ? KickMode::torqueOnly
+                          : fluid ? KickMode::fluid
+                                  : KickMode::forcesOnly;
 
     std::size_t touching = 0;
     double maxOverlap = maxOverlap_;
@@ -233,16 +236,7 @@ void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
             fyA[i] = fy;
             torqueA[i] = torque;
         }
-        if (kick) {
-            kickLoop(kickArrays, first, last, h, gx, gy, weight, fluid);
-        } else {
-#pragma omp simd
-            for (Index i = first; i < last; ++i) {
-                // p.torque held the sum of tangential forces until now (none if walls)
-                const double ri = radius[i];
-                torqueA[i] *= wStart[i] == wStart[i + 1] ? ri : 1.0;
-            }
-        }
+        kickLoop(kickArrays, first, last, h, gx, gy, weight, mode);
     }
     contactCount_ += touching;
     maxOverlap_ = maxOverlap;

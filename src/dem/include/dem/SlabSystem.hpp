@@ -139,7 +139,11 @@ private:
     [[noreturn]] void throwLostParticle() const;
 
     std::vector<int> touchingScratch_;   // the touching pairs of each group, per step
-    std::vector<int> wallScratch_;       // the touching wall contacts: (slot, particle) pairs
+    struct WallPick {
+        int slot;       // in the wall list
+        int particle;
+    };
+    std::vector<WallPick> wallPicks_;    // the touching wall contacts, per step
 };
 
 } // namespace dem
