@@ -6,6 +6,8 @@
 #include "dem/StateRecord.hpp"
 #include "dem/System.hpp"
 
+#include "PairGroups.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -125,14 +127,29 @@ void EngineBase<Derived, Traits>::step(bool fluid)
 }
 
 template <class Derived, class Traits>
+template <class Body>
+void EngineBase<Derived, Traits>::forEachShare(const Body& body)
+{
+    // The kick loops' shares (threadShare): each thread keeps its particles in its cache
+    const Index n = static_cast<Index>(p_.size());
+#pragma omp parallel num_threads(settings_.nThreads)
+    {
+        const auto [first, last] = threadShare(n);
+        body(first, last);
+    }
+}
+
+template <class Derived, class Traits>
 void EngineBase<Derived, Traits>::setFluidForceAtCurrentVelocity(bool fluid)
 {
     const std::vector<double>& K = p_.dragCoefficient;
-    for (const AxisArrays& a : Traits::axes(p_)) {
-        for (std::size_t i = 0; i < p_.size(); ++i) {
-            (*a.fluid)[i] = fluid ? K[i] * ((*a.gasV)[i] - (*a.v)[i]) + (*a.extraF)[i] : 0.0;
+    forEachShare([&](Index first, Index last) {
+        for (const AxisArrays& a : Traits::axes(p_)) {
+            for (Index i = first; i < last; ++i) {
+                (*a.fluid)[i] = fluid ? K[i] * ((*a.gasV)[i] - (*a.v)[i]) + (*a.extraF)[i] : 0.0;
+            }
         }
-    }
+    });
 }
 
 template <class Derived, class Traits>
@@ -144,22 +161,25 @@ void EngineBase<Derived, Traits>::advance(double dtOuter)
 
     // Trapezoidal weights: the drag is evaluated at v(t0), v(t1), ..., v(tn), and the
     // half-kicks apply the end values for half a sub-step and the inner ones for a whole one.
-    const std::size_t n = p_.size();
-    for (const AxisArrays& a : Traits::axes(p_)) {
-        for (std::size_t i = 0; i < n; ++i) (*a.meanV)[i] = 0.5 * (*a.v)[i];
-    }
+    forEachShare([&](Index first, Index last) {
+        for (const AxisArrays& a : Traits::axes(p_)) {
+            for (Index i = first; i < last; ++i) (*a.meanV)[i] = 0.5 * (*a.v)[i];
+        }
+    });
     for (long s = 1; s <= nSub; ++s) {
         meanWeight_ = s == nSub ? 0.5 : 1.0;
         step(true);
     }
     const double invN = 1.0 / static_cast<double>(nSub);
     const std::vector<double>& K = p_.dragCoefficient;
-    for (const AxisArrays& a : Traits::axes(p_)) {
-        for (std::size_t i = 0; i < n; ++i) {
-            (*a.meanV)[i] *= invN;
-            (*a.meanFluid)[i] = K[i] * ((*a.gasV)[i] - (*a.meanV)[i]) + (*a.extraF)[i];
+    forEachShare([&](Index first, Index last) {
+        for (const AxisArrays& a : Traits::axes(p_)) {
+            for (Index i = first; i < last; ++i) {
+                (*a.meanV)[i] *= invN;
+                (*a.meanFluid)[i] = K[i] * ((*a.gasV)[i] - (*a.meanV)[i]) + (*a.extraF)[i];
+            }
         }
-    }
+    });
 }
 
 template <class Derived, class Traits>

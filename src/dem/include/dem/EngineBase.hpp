@@ -118,6 +118,9 @@ protected:
     /// Sets the skin and the search cells that fit it.
     void setSkin(double skin);
     void setFluidForceAtCurrentVelocity(bool fluid);
+    /// body(first, last) on each thread for its share of the particles.
+    template <class Body>
+    void forEachShare(const Body& body);
     void checkClass(int cls) const;
     /// Heap memory of the search and the contact lists, bytes.
     std::size_t listMemoryBytes() const;
