@@ -5,6 +5,7 @@
 #include "dem/System.hpp"
 
 #include "PairGroups.hpp"
+#include "StreamingLoops.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -35,27 +36,16 @@ inline bool insideSlab(double x, double y, double z, const Box& b, double depth)
     return x >= b.xMin && x <= b.xMax && y >= b.yMin && y <= b.yMax && z >= 0.0 && z <= depth;
 }
 
-/// Plain pointers to the slab's per-particle arrays, taken once before a loop: the pair
-/// loop reads them without re-loading through the vectors, and the simd loops need no
-/// alias checks.
+/// Plain pointers to the slab's per-particle arrays that the pair loop reads and sums into,
+/// taken once before it: the loop reads them without re-loading through the vectors.
 struct Arrays {
-    double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *fx, *fy, *fz, *tx, *ty, *tz,
-        *radius, *invMass, *invInertia, *dragK, *gasVx, *gasVy, *gasVz, *extraFx,
-        *extraFy, *extraFz, *fluidX, *fluidY, *fluidZ, *meanVx, *meanVy, *meanVz, *xRef,
-        *yRef, *zRef;
+    double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *fx, *fy, *fz, *tx, *ty, *tz, *radius;
 
     explicit Arrays(SlabParticles& p)
         : x(p.x.data()), y(p.y.data()), z(p.z.data()), vx(p.vx.data()), vy(p.vy.data()),
           vz(p.vz.data()), wx(p.wx.data()), wy(p.wy.data()), wz(p.wz.data()),
           fx(p.fx.data()), fy(p.fy.data()), fz(p.fz.data()), tx(p.tx.data()),
-          ty(p.ty.data()), tz(p.tz.data()), radius(p.radius.data()),
-          invMass(p.invMass.data()), invInertia(p.invInertia.data()),
-          dragK(p.dragCoefficient.data()), gasVx(p.gasVx.data()), gasVy(p.gasVy.data()),
-          gasVz(p.gasVz.data()), extraFx(p.extraFx.data()), extraFy(p.extraFy.data()),
-          extraFz(p.extraFz.data()), fluidX(p.fluidX.data()), fluidY(p.fluidY.data()),
-          fluidZ(p.fluidZ.data()), meanVx(p.meanVx.data()), meanVy(p.meanVy.data()),
-          meanVz(p.meanVz.data()), xRef(p.xRef.data()), yRef(p.yRef.data()),
-          zRef(p.zRef.data())
+          ty(p.ty.data()), tz(p.tz.data()), radius(p.radius.data())
     {
     }
 };
@@ -238,6 +228,23 @@ void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
 
     wallPicks_.resize(wallContacts_.size());
 
+    // The second half-kick (StreamingLoops.hpp) after the wall contacts
+    const SlabKickArrays kickArrays{
+        wStart,        p.fx.data(),      p.fy.data(),      p.fz.data(),
+        p.radius.data(), p.invMass.data(), p.invInertia.data(), p.dragCoefficient.data(),
+        p.gasVx.data(), p.gasVy.data(),   p.gasVz.data(),   p.extraFx.data(),
+        p.extraFy.data(), p.extraFz.data(), p.tx.data(),    p.ty.data(),
+        p.tz.data(),    p.vx.data(),      p.vy.data(),      p.vz.data(),
+        p.wx.data(),    p.wy.data(),      p.wz.data(),      p.fluidX.data(),
+        p.fluidY.data(), p.fluidZ.data(), p.meanVx.data(),  p.meanVy.data(),
+        p.meanVz.data()};
+    const SlabKickLoop kickLoop = streamingLoops().slabSecondHalfKick;
+    const KickMode mode = !kick ? KickMode::torqueOnly
+                          : fluid ? KickMode::fluid
+                                  : KickMode::forcesOnly;
+    const double gx = settings_.gravity[0];
+    const double gy = settings_.gravity[1];
+
     std::size_t touching = 0;
     double maxOverlap = maxOverlap_;
 #pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
@@ -284,108 +291,34 @@ void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
             ++touching;
             maxOverlap = std::max(maxOverlap, c.overlap);
         }
-        if (kick && fluid) {
-            kickLoop<true, true>(first, last, h, weight);
-        } else if (kick) {
-            kickLoop<true, false>(first, last, h, weight);
-        } else {
-            kickLoop<false, false>(first, last, h, weight);
-        }
+        kickLoop(kickArrays, first, last, h, gx, gy, weight, mode);
     }
     contactCount_ += touching;
     maxOverlap_ = maxOverlap;
 }
 
-template <bool Kick, bool Fluid>
-void SlabSystem::kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, double weight)
-{
-    const Arrays a(p_);
-    const int* wStart = wallContacts_.start.data();
-    const double gx = settings_.gravity[0];
-    const double gy = settings_.gravity[1];
-#pragma omp simd
-    for (Index i = first; i < last; ++i) {
-        // Particles with walls have their whole torque already (the loop before): a factor
-        // of 1 keeps it exactly, and a select of loaded values vectorises.
-        const double ri = a.radius[i];
-        const double scale = wStart[i] == wStart[i + 1] ? ri : 1.0;
-        const double txi = scale * a.tx[i];
-        const double tyi = scale * a.ty[i];
-        const double tzi = scale * a.tz[i];
-        a.tx[i] = txi;
-        a.ty[i] = tyi;
-        a.tz[i] = tzi;
-        if constexpr (Kick) {
-            const double invM = a.invMass[i];
-            if constexpr (Fluid) {
-                // Second half-kick with the drag implicit, as System.
-                const double K = a.dragK[i];
-                const double denominator = 1.0 + h * K * invM;
-                const double vxNew =
-                    (a.vx[i] + h * ((a.fx[i] + K * a.gasVx[i] + a.extraFx[i]) * invM + gx))
-                    / denominator;
-                const double vyNew =
-                    (a.vy[i] + h * ((a.fy[i] + K * a.gasVy[i] + a.extraFy[i]) * invM + gy))
-                    / denominator;
-                const double vzNew =
-                    (a.vz[i] + h * ((a.fz[i] + K * a.gasVz[i] + a.extraFz[i]) * invM))
-                    / denominator;
-                a.vx[i] = vxNew;
-                a.vy[i] = vyNew;
-                a.vz[i] = vzNew;
-                a.fluidX[i] = K * (a.gasVx[i] - vxNew) + a.extraFx[i];
-                a.fluidY[i] = K * (a.gasVy[i] - vyNew) + a.extraFy[i];
-                a.fluidZ[i] = K * (a.gasVz[i] - vzNew) + a.extraFz[i];
-                a.meanVx[i] += weight * vxNew;
-                a.meanVy[i] += weight * vyNew;
-                a.meanVz[i] += weight * vzNew;
-            } else {
-                a.vx[i] += h * (a.fx[i] * invM + gx);
-                a.vy[i] += h * (a.fy[i] * invM + gy);
-                a.vz[i] += h * (a.fz[i] * invM);
-            }
-            const double hI = h * a.invInertia[i];
-            a.wx[i] += hI * txi;
-            a.wy[i] += hI * tyi;
-            a.wz[i] += hI * tzi;
-        }
-    }
-}
-
 double SlabSystem::drift()
 {
     const Index n = static_cast<Index>(p_.size());
-    const double dt = settings_.dt;
-    const double h = 0.5 * dt;
-    const double gx = settings_.gravity[0];
-    const double gy = settings_.gravity[1];
-    const Box& b = settings_.box;
-    const double depth = settings_.slabDepth;
-    const Arrays a(p_);
-
+    const SlabDriftStep c{settings_.dt, 0.5 * settings_.dt, settings_.gravity[0],
+                          settings_.gravity[1], settings_.box, settings_.slabDepth};
+    SlabParticles& p = p_;
+    const SlabDriftArrays a{p.invMass.data(), p.invInertia.data(), p.fx.data(),
+                            p.fy.data(),      p.fz.data(),         p.fluidX.data(),
+                            p.fluidY.data(),  p.fluidZ.data(),     p.tx.data(),
+                            p.ty.data(),      p.tz.data(),         p.xRef.data(),
+                            p.yRef.data(),    p.zRef.data(),       p.vx.data(),
+                            p.vy.data(),      p.vz.data(),         p.wx.data(),
+                            p.wy.data(),      p.wz.data(),         p.x.data(),
+                            p.y.data(),       p.z.data()};
+    const SlabDriftLoop driftLoop = streamingLoops().slabFirstHalfKickAndDrift;
     double maxDisplacement2 = 0.0;
-    // Spheres outside the slab, counted in a double from a select: GCC vectorises that, and
-    // not an integer flag from comparisons
     double lost = 0.0;
-#pragma omp parallel for simd num_threads(settings_.nThreads) schedule(static) \
-    reduction(max : maxDisplacement2) reduction(+ : lost)
-    for (Index i = 0; i < n; ++i) {
-        const double invM = a.invMass[i];
-        const double hI = h * a.invInertia[i];
-        a.vx[i] += h * ((a.fx[i] + a.fluidX[i]) * invM + gx);
-        a.vy[i] += h * ((a.fy[i] + a.fluidY[i]) * invM + gy);
-        a.vz[i] += h * ((a.fz[i] + a.fluidZ[i]) * invM);
-        a.wx[i] += hI * a.tx[i];
-        a.wy[i] += hI * a.ty[i];
-        a.wz[i] += hI * a.tz[i];
-        a.x[i] += dt * a.vx[i];
-        a.y[i] += dt * a.vy[i];
-        a.z[i] += dt * a.vz[i];
-        const double dx = a.x[i] - a.xRef[i];
-        const double dy = a.y[i] - a.yRef[i];
-        const double dz = a.z[i] - a.zRef[i];
-        maxDisplacement2 = std::max(maxDisplacement2, dx * dx + dy * dy + dz * dz);
-        lost += insideSlab(a.x[i], a.y[i], a.z[i], b, depth) ? 0.0 : 1.0;
+#pragma omp parallel num_threads(settings_.nThreads) reduction(max : maxDisplacement2) \
+    reduction(+ : lost)
+    {
+        const auto [first, last] = threadShare(n);
+        driftLoop(a, c, first, last, maxDisplacement2, lost);
     }
     if (lost > 0.0) throwLostParticle();
     return maxDisplacement2;

@@ -1,5 +1,5 @@
-// The streaming loops of StreamingLoops.hpp: one body each, inlined into a baseline and an
-// AVX2 function, and the choice between them.
+// The 2D streaming loops of StreamingLoops.hpp: one body each, inlined into a baseline and an
+// AVX2 function, and the choice between them (the slab's in SlabStreamingLoops.cpp).
 
 #include "StreamingLoops.hpp"
 
@@ -131,7 +131,8 @@ __attribute__((target("avx2"))) void kickAvx2(const KickArrays& a, Index first, 
 }
 #endif
 
-const StreamingLoops baselineLoops{SimdLevel::baseline, driftBaseline, kickBaseline};
+const StreamingLoops baselineLoops{SimdLevel::baseline, driftBaseline, kickBaseline,
+                                   slabLoops::driftBaseline, slabLoops::kickBaseline};
 
 const StreamingLoops& chosenLoops()
 {
@@ -161,7 +162,8 @@ const StreamingLoops& streamingLoops(SimdLevel level)
 {
     if (level == SimdLevel::baseline) return baselineLoops;
 #ifdef DEM_HAVE_AVX2_LOOPS
-    static const StreamingLoops avx2Loops{SimdLevel::avx2, driftAvx2, kickAvx2};
+    static const StreamingLoops avx2Loops{SimdLevel::avx2, driftAvx2, kickAvx2,
+                                          slabLoops::driftAvx2, slabLoops::kickAvx2};
     if (cpuHasAvx2()) return avx2Loops;
 #endif
     throw Error("environment variable DEM_SIMD = avx2: this CPU (or build) has no AVX2; unset "

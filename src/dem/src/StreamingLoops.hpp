@@ -1,6 +1,7 @@
 #pragma once
-// The 2D engine's loops that stream through the particle arrays, one particle at a time: the
-// first half-kick with the drift, and the second half-kick (internal to the library).
+// The engines' loops that stream through the particle arrays, one particle at a time: the
+// first half-kick with the drift, and the second half-kick, for the 2D discs and for the
+// slab's spheres (internal to the library).
 //
 // Compiled twice, for AVX2 (4 doubles a vector) and for the baseline x86-64 (SSE2, 2
 // doubles), and picked at run time: AVX2 where the CPU has it, unless the environment
@@ -48,13 +49,59 @@ enum class KickMode { fluid, forcesOnly, torqueOnly };
 using KickLoop = void (*)(const KickArrays& a, std::ptrdiff_t first, std::ptrdiff_t last,
                          double h, double gx, double gy, double weight, KickMode mode);
 
+struct SlabDriftArrays {
+    const double *invMass, *invInertia, *fx, *fy, *fz, *fluidX, *fluidY, *fluidZ, *tx, *ty,
+        *tz, *xRef, *yRef, *zRef;
+    double *vx, *vy, *vz, *wx, *wy, *wz, *x, *y, *z;
+};
+
+struct SlabDriftStep {
+    double dt, h, gx, gy;   ///< time step, half of it, gravity (in the plane)
+    Box box;
+    double depth;           ///< the slab's walls at z = 0 and z = depth
+};
+
+/// The slab's DriftLoop: spheres in 3D, outside the box or the slab counted as lost.
+using SlabDriftLoop = void (*)(const SlabDriftArrays& a, const SlabDriftStep& c,
+                              std::ptrdiff_t first, std::ptrdiff_t last,
+                              double& maxDisplacement2, double& lost);
+
+struct SlabKickArrays {
+    const int* wallStart;   ///< as KickArrays
+    const double *fx, *fy, *fz, *radius, *invMass, *invInertia, *dragK, *gasVx, *gasVy, *gasVz,
+        *extraFx, *extraFy, *extraFz;
+    double *tx, *ty, *tz, *vx, *vy, *vz, *wx, *wy, *wz, *fluidX, *fluidY, *fluidZ, *meanVx,
+        *meanVy, *meanVz;
+};
+
+/// The slab's KickLoop (the torque a vector).
+using SlabKickLoop = void (*)(const SlabKickArrays& a, std::ptrdiff_t first,
+                             std::ptrdiff_t last, double h, double gx, double gy,
+                             double weight, KickMode mode);
+
 enum class SimdLevel { baseline, avx2 };
 
 struct StreamingLoops {
     SimdLevel level;
     DriftLoop firstHalfKickAndDrift;
     KickLoop secondHalfKick;
+    SlabDriftLoop slabFirstHalfKickAndDrift;
+    SlabKickLoop slabSecondHalfKick;
 };
+
+/// The slab's loops of each level (SlabStreamingLoops.cpp), for the tables of streamingLoops.
+namespace slabLoops {
+void driftBaseline(const SlabDriftArrays& a, const SlabDriftStep& c, std::ptrdiff_t first,
+                   std::ptrdiff_t last, double& maxDisplacement2, double& lost);
+void kickBaseline(const SlabKickArrays& a, std::ptrdiff_t first, std::ptrdiff_t last,
+                  double h, double gx, double gy, double weight, KickMode mode);
+#if defined(__x86_64__) && defined(__GNUC__)
+void driftAvx2(const SlabDriftArrays& a, const SlabDriftStep& c, std::ptrdiff_t first,
+               std::ptrdiff_t last, double& maxDisplacement2, double& lost);
+void kickAvx2(const SlabKickArrays& a, std::ptrdiff_t first, std::ptrdiff_t last, double h,
+              double gx, double gy, double weight, KickMode mode);
+#endif
+} // namespace slabLoops
 
 /// Whether this CPU runs the AVX2 version.
 bool cpuHasAvx2();

@@ -288,13 +288,10 @@ Foam::dpmCloud::dpmCloud
         "Invalid particle settings",
         [&]{ dem_.reset(new dem::Simulation(settings)); }
     );
-    if (!slab_)
-    {
-        Info<< "DEM: kick and drift loops for "
-            << dem::streamingLoopsInUse().c_str()
-            << " (environment variable DEM_SIMD = baseline or avx2 chooses;"
-            << " the same bits)" << endl;
-    }
+    Info<< "DEM: kick and drift loops for "
+        << dem::streamingLoopsInUse().c_str()
+        << " (environment variable DEM_SIMD = baseline or avx2 chooses;"
+        << " the same bits)" << endl;
     couplingThreads_ =
         settings.nThreads
       + (schedule_ == couplingSchedule::concurrent ? 1 : 0);

@@ -132,10 +132,6 @@ private:
     double drift();
     void computePairForces(double historyDt);
     void addWallForcesAndKick(double historyDt, bool kick, bool fluid);
-    /// Particles [first, last): the torque made whole (r times the pair sum, for those
-    /// without walls) and, if Kick, the second half-kick.
-    template <bool Kick, bool Fluid>
-    void kickLoop(std::ptrdiff_t first, std::ptrdiff_t last, double h, double weight);
     [[noreturn]] void throwLostParticle() const;
 
     std::vector<int> touchingScratch_;   // the touching pairs of each group, per step
