@@ -85,9 +85,9 @@ void checkStatePath(const std::string& path);
 std::string bedDifferences(const Settings& settings, const BedRecipe& inFile,
                            const BedRecipe& here);
 
-/// The instruction set the 2D engine's kick and drift loops run with: "avx2" where the CPU
-/// has it, else "baseline" (x86-64's SSE2); the environment variable DEM_SIMD = baseline or
-/// avx2 chooses. Both give the same bits. Throws dem::Error for a bad DEM_SIMD.
+/// The instruction set the engines' kick and drift loops run with (2D and slab): "avx2"
+/// where the CPU has it, else "baseline" (x86-64's SSE2); the environment variable DEM_SIMD =
+/// baseline or avx2 chooses. Both give the same bits. Throws dem::Error for a bad DEM_SIMD.
 std::string streamingLoopsInUse();
 
 class System;
