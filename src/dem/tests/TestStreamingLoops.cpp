@@ -17,20 +17,35 @@ namespace {
 
 constexpr std::ptrdiff_t n = 1003;   // odd: every version has a remainder
 
+/// count arrays of n values in [-1, 1), scaled below to plausible magnitudes; the
+/// inverse mass and inertia (arrays 0 and 1) made positive and of a particle's size.
+std::vector<std::vector<double>> randomArrays(int count, std::uint64_t seed)
+{
+    std::vector<std::vector<double>> a(count, std::vector<double>(n));
+    Random rng(seed);
+    for (auto& v : a) {
+        for (double& x : v) x = rng.uniform(-1.0, 1.0);
+    }
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+        a[0][i] = 1.0 / (1e-6 + 1e-5 * std::abs(a[0][i]));     // invMass
+        a[1][i] = 1.0 / (1e-12 + 1e-11 * std::abs(a[1][i]));   // invInertia
+    }
+    return a;
+}
+
 /// Arrays of plausible magnitudes (forces ~1e-4 N, velocities ~0.1 m/s, positions in a
 /// 0.15 m box), a few particles with wall candidates.
 struct Bed {
+    static constexpr std::uint64_t seed = 42;
+    static constexpr DriftStep step{1e-5, 0.5e-5, 0.0, -9.81, Box{0.0, 0.15, 0.0, 0.9}};
+    static DriftLoop driftOf(const StreamingLoops& l) { return l.firstHalfKickAndDrift; }
+    static KickLoop kickOf(const StreamingLoops& l) { return l.secondHalfKick; }
+
     std::vector<std::vector<double>> a;
     std::vector<int> wallStart;
-    explicit Bed(std::uint64_t seed) : a(22, std::vector<double>(n)), wallStart(n + 1, 0)
+    explicit Bed(std::uint64_t seed) : a(randomArrays(22, seed)), wallStart(n + 1, 0)
     {
-        Random rng(seed);
-        for (auto& v : a) {
-            for (double& x : v) x = rng.uniform(-1.0, 1.0);
-        }
         for (std::ptrdiff_t i = 0; i < n; ++i) {
-            a[0][i] = 1.0 / (1e-6 + 1e-5 * std::abs(a[0][i]));     // invMass
-            a[1][i] = 1.0 / (1e-12 + 1e-11 * std::abs(a[1][i]));   // invInertia
             for (int k : {2, 3, 4, 5, 6}) a[k][i] *= 1e-4;          // forces, torque
             a[7][i] = 0.075 + 0.07 * a[7][i];                        // xRef
             a[8][i] = 0.3 + 0.2 * a[8][i];                           // yRef
@@ -42,7 +57,7 @@ struct Bed {
             a[15][i] = 1e-3 * std::abs(a[15][i]);                    // drag K
             wallStart[i + 1] = wallStart[i] + (i % 37 == 0 ? 1 : 0);
         }
-        a[12][500] = 0.2;   // one particle outside the 0.15 m wide box
+        a[12][500] = 0.2;   // one particle outside the 0.15 m wide box (x = 0.2 m)
     }
     DriftArrays drift()
     {
@@ -61,17 +76,17 @@ struct Bed {
 
 /// The slab's arrays alike, in 3D: the spheres of a 5-mm slab, one outside it in z.
 struct SlabBed {
+    static constexpr std::uint64_t seed = 7;
+    static constexpr SlabDriftStep step{1e-5, 0.5e-5, 0.0, -9.81, Box{0.0, 0.15, 0.0, 0.9},
+                                        5e-3};
+    static SlabDriftLoop driftOf(const StreamingLoops& l) { return l.slabFirstHalfKickAndDrift; }
+    static SlabKickLoop kickOf(const StreamingLoops& l) { return l.slabSecondHalfKick; }
+
     std::vector<std::vector<double>> a;
     std::vector<int> wallStart;
-    explicit SlabBed(std::uint64_t seed) : a(34, std::vector<double>(n)), wallStart(n + 1, 0)
+    explicit SlabBed(std::uint64_t seed) : a(randomArrays(34, seed)), wallStart(n + 1, 0)
     {
-        Random rng(seed);
-        for (auto& v : a) {
-            for (double& x : v) x = rng.uniform(-1.0, 1.0);
-        }
         for (std::ptrdiff_t i = 0; i < n; ++i) {
-            a[0][i] = 1.0 / (1e-6 + 1e-5 * std::abs(a[0][i]));     // invMass
-            a[1][i] = 1.0 / (1e-12 + 1e-11 * std::abs(a[1][i]));   // invInertia
             for (int k = 2; k <= 10; ++k) a[k][i] *= 1e-4;          // forces, fluid, torques
             a[11][i] = 0.075 + 0.07 * a[11][i];                      // xRef
             a[12][i] = 0.3 + 0.2 * a[12][i];                         // yRef
@@ -113,54 +128,42 @@ bool sameBits(const B& x, const B& y)
     return true;
 }
 
-} // namespace
-
-TEST(StreamingLoops, AvxGivesTheBaselineBits)
+/// The drift and the kick in all three modes, from the first particle and from the fifth,
+/// on two copies of bed B: one by the baseline loops, one by the AVX2 ones.
+template <class B>
+void expectAvxGivesTheBaselineBits()
 {
-    if (!cpuHasAvx2()) GTEST_SKIP() << "this CPU has no AVX2: only the baseline runs here";
     const StreamingLoops& base = streamingLoops(SimdLevel::baseline);
     const StreamingLoops& avx2 = streamingLoops(SimdLevel::avx2);
-    ASSERT_EQ(base.level, SimdLevel::baseline);
-    ASSERT_EQ(avx2.level, SimdLevel::avx2);
-
-    Bed b(42), v(42);
-    const DriftStep step{1e-5, 0.5e-5, 0.0, -9.81, Box{0.0, 0.15, 0.0, 0.9}};
+    B b(B::seed), v(B::seed);
     for (const std::ptrdiff_t first : {std::ptrdiff_t{0}, std::ptrdiff_t{5}}) {
         double maxB = 0.0, lostB = 0.0, maxV = 0.0, lostV = 0.0;
-        base.firstHalfKickAndDrift(b.drift(), step, first, n, maxB, lostB);
-        avx2.firstHalfKickAndDrift(v.drift(), step, first, n, maxV, lostV);
+        B::driftOf(base)(b.drift(), B::step, first, n, maxB, lostB);
+        B::driftOf(avx2)(v.drift(), B::step, first, n, maxV, lostV);
         EXPECT_EQ(std::memcmp(&maxB, &maxV, sizeof(double)), 0);
-        EXPECT_EQ(lostB, 1.0);   // particle 500 (x = 0.2 m)
+        EXPECT_EQ(lostB, 1.0);   // the one particle out of bounds
         EXPECT_EQ(lostV, 1.0);
         for (const KickMode mode :
              {KickMode::fluid, KickMode::forcesOnly, KickMode::torqueOnly}) {
-            base.secondHalfKick(b.kick(), first, n, 0.5e-5, 0.0, -9.81, 1.0, mode);
-            avx2.secondHalfKick(v.kick(), first, n, 0.5e-5, 0.0, -9.81, 1.0, mode);
+            B::kickOf(base)(b.kick(), first, n, 0.5e-5, 0.0, -9.81, 1.0, mode);
+            B::kickOf(avx2)(v.kick(), first, n, 0.5e-5, 0.0, -9.81, 1.0, mode);
         }
     }
     EXPECT_TRUE(sameBits(b, v));
 }
 
+} // namespace
+
+TEST(StreamingLoops, AvxGivesTheBaselineBits)
+{
+    if (!cpuHasAvx2()) GTEST_SKIP() << "this CPU has no AVX2: only the baseline runs here";
+    ASSERT_EQ(streamingLoops(SimdLevel::baseline).level, SimdLevel::baseline);
+    ASSERT_EQ(streamingLoops(SimdLevel::avx2).level, SimdLevel::avx2);
+    expectAvxGivesTheBaselineBits<Bed>();
+}
+
 TEST(StreamingLoops, SlabAvxGivesTheBaselineBits)
 {
     if (!cpuHasAvx2()) GTEST_SKIP() << "this CPU has no AVX2: only the baseline runs here";
-    const StreamingLoops& base = streamingLoops(SimdLevel::baseline);
-    const StreamingLoops& avx2 = streamingLoops(SimdLevel::avx2);
-
-    SlabBed b(7), v(7);
-    const SlabDriftStep step{1e-5, 0.5e-5, 0.0, -9.81, Box{0.0, 0.15, 0.0, 0.9}, 5e-3};
-    for (const std::ptrdiff_t first : {std::ptrdiff_t{0}, std::ptrdiff_t{5}}) {
-        double maxB = 0.0, lostB = 0.0, maxV = 0.0, lostV = 0.0;
-        base.slabFirstHalfKickAndDrift(b.drift(), step, first, n, maxB, lostB);
-        avx2.slabFirstHalfKickAndDrift(v.drift(), step, first, n, maxV, lostV);
-        EXPECT_EQ(std::memcmp(&maxB, &maxV, sizeof(double)), 0);
-        EXPECT_EQ(lostB, 1.0);   // sphere 700 (z = 6 mm)
-        EXPECT_EQ(lostV, 1.0);
-        for (const KickMode mode :
-             {KickMode::fluid, KickMode::forcesOnly, KickMode::torqueOnly}) {
-            base.slabSecondHalfKick(b.kick(), first, n, 0.5e-5, 0.0, -9.81, 1.0, mode);
-            avx2.slabSecondHalfKick(v.kick(), first, n, 0.5e-5, 0.0, -9.81, 1.0, mode);
-        }
-    }
-    EXPECT_TRUE(sameBits(b, v));
+    expectAvxGivesTheBaselineBits<SlabBed>();
 }
