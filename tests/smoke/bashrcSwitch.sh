@@ -2,11 +2,13 @@
 # Sourcing another checkout's etc/bashrc switches to it: its applications and
 # libraries come first and the other's leave PATH and LD_LIBRARY_PATH, also
 # when switching back to one sourced before (they once stayed behind the
-# other's, and a run took the other build's libraries without a word).
+# other's, and a run took the other build's libraries without a word); and
+# etc/checkEnvironment names another build's libraries found first.
 . "$(dirname "${BASH_SOURCE[0]}")/testFunctions" "$@"
 
 for name in a b; do
-    mkdir -p "$workDir/$name/etc" && cp "$testsDir/../etc/bashrc" "$workDir/$name/etc/" \
+    mkdir -p "$workDir/$name/etc" \
+        && cp "$testsDir/../etc/bashrc" "$testsDir/../etc/checkEnvironment" "$workDir/$name/etc/" \
         || fail "copy"
 done
 a="$(cd "$workDir/a" && pwd -P)"; b="$(cd "$workDir/b" && pwd -P)"
@@ -31,4 +33,7 @@ for d in "$(app "$a")" "$a/bin"; do
     [ "$(count "$PATH" "$d")" = 1 ] || fail "a's $d is in PATH $(count "$PATH" "$d") times, not once"
 done
 [ "$(count "$LD_LIBRARY_PATH" "$(lib "$a")")" = 1 ] || fail "a's library directory is not in LD_LIBRARY_PATH once"
-pass "sourcing a, b, then a again leaves a's directories first, once, and none of b's"
+"$a/etc/checkEnvironment" -quiet || fail "checkEnvironment refuses a's environment"
+LD_LIBRARY_PATH="$(lib "$b"):$LD_LIBRARY_PATH" "$a/etc/checkEnvironment" -quiet 2>/dev/null \
+    && fail "checkEnvironment passes with b's libraries first"
+pass "sourcing a, b, then a again leaves a's directories first, once, and none of b's; checkEnvironment refuses another build's libraries first"
