@@ -230,14 +230,16 @@ void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
 
     // The second half-kick (StreamingLoops.hpp) after the wall contacts
     const SlabKickArrays kickArrays{
-        wStart,        p.fx.data(),      p.fy.data(),      p.fz.data(),
-        p.radius.data(), p.invMass.data(), p.invInertia.data(), p.dragCoefficient.data(),
-        p.gasVx.data(), p.gasVy.data(),   p.gasVz.data(),   p.extraFx.data(),
-        p.extraFy.data(), p.extraFz.data(), p.tx.data(),    p.ty.data(),
-        p.tz.data(),    p.vx.data(),      p.vy.data(),      p.vz.data(),
-        p.wx.data(),    p.wy.data(),      p.wz.data(),      p.fluidX.data(),
-        p.fluidY.data(), p.fluidZ.data(), p.meanVx.data(),  p.meanVy.data(),
-        p.meanVz.data()};
+        wStart,
+        p.fx.data(), p.fy.data(), p.fz.data(), p.radius.data(), p.invMass.data(),
+        p.invInertia.data(), p.dragCoefficient.data(),
+        p.gasVx.data(), p.gasVy.data(), p.gasVz.data(),
+        p.extraFx.data(), p.extraFy.data(), p.extraFz.data(),
+        p.tx.data(), p.ty.data(), p.tz.data(),
+        p.vx.data(), p.vy.data(), p.vz.data(),
+        p.wx.data(), p.wy.data(), p.wz.data(),
+        p.fluidX.data(), p.fluidY.data(), p.fluidZ.data(),
+        p.meanVx.data(), p.meanVy.data(), p.meanVz.data()};
     const SlabKickLoop kickLoop = streamingLoops().slabSecondHalfKick;
     const KickMode mode = !kick ? KickMode::torqueOnly
                           : fluid ? KickMode::fluid
@@ -303,14 +305,15 @@ double SlabSystem::drift()
     const SlabDriftStep c{settings_.dt, 0.5 * settings_.dt, settings_.gravity[0],
                           settings_.gravity[1], settings_.box, settings_.slabDepth};
     SlabParticles& p = p_;
-    const SlabDriftArrays a{p.invMass.data(), p.invInertia.data(), p.fx.data(),
-                            p.fy.data(),      p.fz.data(),         p.fluidX.data(),
-                            p.fluidY.data(),  p.fluidZ.data(),     p.tx.data(),
-                            p.ty.data(),      p.tz.data(),         p.xRef.data(),
-                            p.yRef.data(),    p.zRef.data(),       p.vx.data(),
-                            p.vy.data(),      p.vz.data(),         p.wx.data(),
-                            p.wy.data(),      p.wz.data(),         p.x.data(),
-                            p.y.data(),       p.z.data()};
+    const SlabDriftArrays a{
+        p.invMass.data(), p.invInertia.data(),
+        p.fx.data(), p.fy.data(), p.fz.data(),
+        p.fluidX.data(), p.fluidY.data(), p.fluidZ.data(),
+        p.tx.data(), p.ty.data(), p.tz.data(),
+        p.xRef.data(), p.yRef.data(), p.zRef.data(),
+        p.vx.data(), p.vy.data(), p.vz.data(),
+        p.wx.data(), p.wy.data(), p.wz.data(),
+        p.x.data(), p.y.data(), p.z.data()};
     const SlabDriftLoop driftLoop = streamingLoops().slabFirstHalfKickAndDrift;
     double maxDisplacement2 = 0.0;
     double lost = 0.0;
