@@ -165,15 +165,32 @@ def submit(study, beds, cases, bed_deps, sbatch_options, results_args):
 
 
 def last_progress(log):
-    t = None
+    """The simulated time and the ETA (s) of a running case's last Progress line
+    (None, None without one). Read from the end, in ever longer tails: a 60-s
+    case's log holds ~200 MB, and Progress comes every 10 s of wall time."""
     try:
-        with open(log, errors="replace") as f:
-            for line in f:
-                if line.startswith("Progress: t = "):
-                    t = line.split()[3]
-    except OSError:
-        pass
-    return t
+        size = os.path.getsize(log)
+        with open(log, "rb") as f:
+            tail = 1 << 20
+            while True:
+                f.seek(max(size - tail, 0))
+                lines = f.read().decode(errors="replace").splitlines()
+                if tail < size:
+                    lines = lines[1:]       # the first may be cut
+                for line in reversed(lines):
+                    if line.startswith("Progress: t = "):
+                        words = line.split()
+                        eta = words[words.index("ETA") + 1] if "ETA" in words else None
+                        return words[3], float(eta) if eta else None
+                if tail >= size:
+                    return None, None
+                tail *= 8
+    except (OSError, ValueError, IndexError):
+        return None, None
+
+
+def hours(seconds):
+    return "%.1f h" % (seconds/3600) if seconds >= 3600 else "%.0f min" % (seconds/60)
 
 
 def status(study, running_in, latest_complete_time):
@@ -188,6 +205,7 @@ def status(study, running_in, latest_complete_time):
         say("dpmStudy: no beds or cases in %s" % study.dir)
         return
     say("%-28s %-11s %-14s %s" % ("bed / case", "state", "job", "simulated time"))
+    remaining = []      # (simulated s left, running) of every unfinished case
     for name, d, kind in dirs:
         job = read_record(d)
         pid = running_in(d)
@@ -207,8 +225,14 @@ def status(study, running_in, latest_complete_time):
             end = study.end_time(d)
             finished = study.finished(d)
             log = os.path.join(d, "log.dpmFoam2D")
-            running = last_progress(log) if pid or slurmState == "RUNNING" else None
+            running, eta = (last_progress(log) if pid or slurmState == "RUNNING"
+                            else (None, None))
             t = "%s of %g s" % (running if running else "%g" % (tc or 0), end)
+            if eta is not None:
+                t += ", ETA " + hours(eta)
+            if not finished:
+                left = end - float(running if running else tc or 0)
+                remaining.append((left, running is not None))
         if pid:
             state, job = "running", "local pid %d" % pid
         elif slurmState in ACTIVE:
@@ -224,6 +248,11 @@ def status(study, running_in, latest_complete_time):
         else:
             state = "not started"
         say("%-28s %-11s %-14s %s" % (name, state, job or "-", t))
+    if remaining:
+        left = sum(r[0] for r in remaining)
+        nRunning = sum(1 for r in remaining if r[1])
+        say("left: %g simulated s in %d case(s), %d running (ETA: the solver's, at its"
+            " mean pace since it started)" % (left, len(remaining), nRunning))
 
 
 def failed_log(log):

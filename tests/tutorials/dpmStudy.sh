@@ -16,7 +16,9 @@
 #      s, checked against the function object's rows), the M(t) figures per pressure and
 #      per mass fraction, indices.png, hydrodynamics.png, snapshots.png;
 #   4. a third run finds everything finished and runs nothing; -status
-#      shows the bed and both cases done at 0.1 s; two -results at once
+#      shows the bed and both cases done at 0.1 s, and takes a running
+#      case's time and ETA from the last Progress line of a log read from
+#      its end (checked on a 4.5-MB log); two -results at once
 #      (two copies of a work queue finishing together) both succeed, the
 #      second waiting for the first, and make the same summary.csv;
 #   5. -excessVelocity 0.2 gives a case with U0 = Umf + 0.2 m/s;
@@ -156,6 +158,21 @@ for c in w0.50_1bar w0.50_64bar
 do
     grep -q "^$c *done *- *0.1 of 0.1 s$" log.status || fail "-status: $c not done at 0.1 s"
 done
+# A running case's time and ETA come from the last Progress line, read from
+# the log's end (a 60-s case's log holds ~200 MB)
+py - <<PY || fail "-status: the last Progress line of a log"
+import sys
+sys.path.insert(0, "$DPMFOAM2D_PROJECT/bin")
+from dpmStudySlurm import last_progress
+with open("fake.log", "w") as f:
+    f.write("Progress: t = 1 s (2%), 40 wall s per simulated s, ETA 2360 s\n")
+    f.write(("x" * 99 + "\n") * 30000)
+    f.write("Progress: t = 2.5 s (4%), 41 wall s per simulated s, ETA 2357 s\n")
+    f.write(("x" * 99 + "\n") * 15000)    # 1.5 MB: beyond the first tail read
+assert last_progress("fake.log") == ("2.5", 2357.0), last_progress("fake.log")
+open("none.log", "w").write("Time = 1\n" * 10)
+assert last_progress("none.log") == (None, None), last_progress("none.log")
+PY
 echo "5. a variant study at a given U0 - Umf"
 dpmStudy variant -w 0.5 -p 64 -j 1 -scale 0.05 -settleTime 0.1 -endTime 0.02 \
     -writeInterval 0.02 -mean 0.01 -excessVelocity 0.2 -noPictures > log.variant 2>&1 \
