@@ -1,5 +1,5 @@
-// The slab's streaming loops of StreamingLoops.hpp: one body each, inlined into a baseline
-// and an AVX2 function, as the 2D ones (StreamingLoops.cpp).
+// The slab's streaming loops of StreamingLoops.hpp: one body each, compiled for the baseline
+// and for AVX2 (Compiled), as the 2D ones (StreamingLoops.cpp).
 
 #include "StreamingLoops.hpp"
 
@@ -129,34 +129,21 @@ using Index = std::ptrdiff_t;
 
 namespace slabLoops {
 
-void driftBaseline(const SlabDriftArrays& a, const SlabDriftStep& c, Index first, Index last,
-                   double& maxDisplacement2, double& lost)
+SlabDriftLoop drift(SimdLevel level)
 {
-    driftBody(a, c, first, last, maxDisplacement2, lost);
-}
-
-void kickBaseline(const SlabKickArrays& a, Index first, Index last, double h, double gx,
-                  double gy, double weight, KickMode mode)
-{
-    kickBody(a, first, last, h, gx, gy, weight, mode);
-}
-
-#if defined(__x86_64__) && defined(__GNUC__)
-__attribute__((target("avx2"))) void driftAvx2(const SlabDriftArrays& a,
-                                               const SlabDriftStep& c, Index first,
-                                               Index last, double& maxDisplacement2,
-                                               double& lost)
-{
-    driftBody(a, c, first, last, maxDisplacement2, lost);
-}
-
-__attribute__((target("avx2"))) void kickAvx2(const SlabKickArrays& a, Index first,
-                                              Index last, double h, double gx, double gy,
-                                              double weight, KickMode mode)
-{
-    kickBody(a, first, last, h, gx, gy, weight, mode);
-}
+#ifdef DEM_HAVE_AVX2_LOOPS
+    if (level == SimdLevel::avx2) return Compiled<driftBody, SlabDriftLoop>::avx2;
 #endif
+    return Compiled<driftBody, SlabDriftLoop>::baseline;
+}
+
+SlabKickLoop kick(SimdLevel level)
+{
+#ifdef DEM_HAVE_AVX2_LOOPS
+    if (level == SimdLevel::avx2) return Compiled<kickBody, SlabKickLoop>::avx2;
+#endif
+    return Compiled<kickBody, SlabKickLoop>::baseline;
+}
 
 } // namespace slabLoops
 

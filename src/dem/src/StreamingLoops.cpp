@@ -1,5 +1,5 @@
-// The 2D streaming loops of StreamingLoops.hpp: one body each, inlined into a baseline and an
-// AVX2 function, and the choice between them (the slab's in SlabStreamingLoops.cpp).
+// The 2D streaming loops of StreamingLoops.hpp: one body each, compiled for the baseline and
+// for AVX2 (Compiled), and the choice between them (the slab's in SlabStreamingLoops.cpp).
 
 #include "StreamingLoops.hpp"
 
@@ -9,10 +9,6 @@
 #include <algorithm>
 #include <cstdlib>
 #include <string>
-
-#if defined(__x86_64__) && defined(__GNUC__)
-#define DEM_HAVE_AVX2_LOOPS 1
-#endif
 
 namespace dem {
 
@@ -103,48 +99,27 @@ using Index = std::ptrdiff_t;
     }
 }
 
-void driftBaseline(const DriftArrays& a, const DriftStep& c, Index first, Index last,
-                   double& maxDisplacement2, double& lost)
+const StreamingLoops& baselineLoops()
 {
-    driftBody(a, c, first, last, maxDisplacement2, lost);
+    static const StreamingLoops loops{SimdLevel::baseline,
+                                      Compiled<driftBody, DriftLoop>::baseline,
+                                      Compiled<kickBody, KickLoop>::baseline,
+                                      slabLoops::drift(SimdLevel::baseline),
+                                      slabLoops::kick(SimdLevel::baseline)};
+    return loops;
 }
-
-void kickBaseline(const KickArrays& a, Index first, Index last, double h, double gx, double gy,
-                  double weight, KickMode mode)
-{
-    kickBody(a, first, last, h, gx, gy, weight, mode);
-}
-
-#ifdef DEM_HAVE_AVX2_LOOPS
-__attribute__((target("avx2"))) void driftAvx2(const DriftArrays& a, const DriftStep& c,
-                                               Index first, Index last,
-                                               double& maxDisplacement2, double& lost)
-{
-    driftBody(a, c, first, last, maxDisplacement2, lost);
-}
-
-__attribute__((target("avx2"))) void kickAvx2(const KickArrays& a, Index first, Index last,
-                                              double h, double gx, double gy, double weight,
-                                              KickMode mode)
-{
-    kickBody(a, first, last, h, gx, gy, weight, mode);
-}
-#endif
-
-const StreamingLoops baselineLoops{SimdLevel::baseline, driftBaseline, kickBaseline,
-                                   slabLoops::driftBaseline, slabLoops::kickBaseline};
 
 const StreamingLoops& chosenLoops()
 {
     const char* variable = std::getenv("DEM_SIMD");
     const std::string wanted = variable ? variable : "";
-    if (wanted == "baseline") return baselineLoops;
+    if (wanted == "baseline") return baselineLoops();
     if (wanted == "avx2") return streamingLoops(SimdLevel::avx2);
     if (!wanted.empty()) {
         throw Error("environment variable DEM_SIMD = '" + wanted
                     + "' is not one of: baseline, avx2 (or unset: the best this CPU runs)");
     }
-    return cpuHasAvx2() ? streamingLoops(SimdLevel::avx2) : baselineLoops;
+    return cpuHasAvx2() ? streamingLoops(SimdLevel::avx2) : baselineLoops();
 }
 
 } // namespace
@@ -160,10 +135,13 @@ bool cpuHasAvx2()
 
 const StreamingLoops& streamingLoops(SimdLevel level)
 {
-    if (level == SimdLevel::baseline) return baselineLoops;
+    if (level == SimdLevel::baseline) return baselineLoops();
 #ifdef DEM_HAVE_AVX2_LOOPS
-    static const StreamingLoops avx2Loops{SimdLevel::avx2, driftAvx2, kickAvx2,
-                                          slabLoops::driftAvx2, slabLoops::kickAvx2};
+    static const StreamingLoops avx2Loops{SimdLevel::avx2,
+                                          Compiled<driftBody, DriftLoop>::avx2,
+                                          Compiled<kickBody, KickLoop>::avx2,
+                                          slabLoops::drift(SimdLevel::avx2),
+                                          slabLoops::kick(SimdLevel::avx2)};
     if (cpuHasAvx2()) return avx2Loops;
 #endif
     throw Error("environment variable DEM_SIMD = avx2: this CPU (or build) has no AVX2; unset "

@@ -89,18 +89,28 @@ struct StreamingLoops {
     SlabKickLoop slabSecondHalfKick;
 };
 
-/// The slab's loops of each level (SlabStreamingLoops.cpp), for the tables of streamingLoops.
-namespace slabLoops {
-void driftBaseline(const SlabDriftArrays& a, const SlabDriftStep& c, std::ptrdiff_t first,
-                   std::ptrdiff_t last, double& maxDisplacement2, double& lost);
-void kickBaseline(const SlabKickArrays& a, std::ptrdiff_t first, std::ptrdiff_t last,
-                  double h, double gx, double gy, double weight, KickMode mode);
 #if defined(__x86_64__) && defined(__GNUC__)
-void driftAvx2(const SlabDriftArrays& a, const SlabDriftStep& c, std::ptrdiff_t first,
-               std::ptrdiff_t last, double& maxDisplacement2, double& lost);
-void kickAvx2(const SlabKickArrays& a, std::ptrdiff_t first, std::ptrdiff_t last, double h,
-              double gx, double gy, double weight, KickMode mode);
+#define DEM_HAVE_AVX2_LOOPS 1
 #endif
+
+/// One loop body compiled for both instruction sets: Compiled<body, Loop>::baseline and
+/// ::avx2 have the signature of the function pointer type Loop and inline body (an
+/// always_inline function), so that the compiler vectorises it for each.
+template <auto body, class Loop>
+struct Compiled;
+
+template <auto body, class... Args>
+struct Compiled<body, void (*)(Args...)> {
+    static void baseline(Args... args) { body(args...); }
+#ifdef DEM_HAVE_AVX2_LOOPS
+    __attribute__((target("avx2"))) static void avx2(Args... args) { body(args...); }
+#endif
+};
+
+/// The slab's loops of a level (SlabStreamingLoops.cpp), for the tables of streamingLoops.
+namespace slabLoops {
+SlabDriftLoop drift(SimdLevel level);
+SlabKickLoop kick(SimdLevel level);
 } // namespace slabLoops
 
 /// Whether this CPU runs the AVX2 version.
