@@ -96,6 +96,7 @@ SlabSystem::SlabSystem(const Settings& settings)
     : EngineBase(validatedSlab(settings), slabWalls(settings.box, settings.slabDepth),
                  skinStartFraction, settings.neighbourSkin < 0.0)
 {
+    streamingLoops();   // a bad $DEM_SIMD is an error here, not at the first step
 }
 
 void SlabSystem::addWall(const Vec3& point, const Vec3& normal)

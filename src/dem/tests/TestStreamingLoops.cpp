@@ -3,12 +3,17 @@
 // the 2D discs' and the slab's spheres'.
 
 #include "StreamingLoops.hpp"
+#include "TestHelpers.hpp"
 #include "dem/Random.hpp"
+#include "dem/SlabSystem.hpp"
+#include "dem/System.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <string>
 #include <vector>
 
 using namespace dem;
@@ -166,4 +171,31 @@ TEST(StreamingLoops, SlabAvxGivesTheBaselineBits)
 {
     if (!cpuHasAvx2()) GTEST_SKIP() << "this CPU has no AVX2: only the baseline runs here";
     expectAvxGivesTheBaselineBits<SlabBed>();
+}
+
+// A bad DEM_SIMD is refused when an engine is made, 2D or slab, with a dem::Error naming the
+// variable and the allowed values (the solver reports it as a bad setting), not at a first
+// step. ctest runs each test in a process of its own, where no loops were chosen before.
+TEST(StreamingLoops, BadDemSimdIsRefusedByBothEngines)
+{
+    Settings s = test::paperSettings({0.0, 0.15, 0.0, 0.9});
+    ASSERT_EQ(setenv("DEM_SIMD", "sse9", 1), 0);
+    for (const int dimension : {2, 3}) {
+        s.dimension = dimension;
+        s.slabDepth = 5e-3;
+        try {
+            if (dimension == 2) {
+                System sim(s);
+            } else {
+                SlabSystem sim(s);
+            }
+            ADD_FAILURE() << "DEM_SIMD = sse9 accepted in " << dimension << "D";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("DEM_SIMD = 'sse9' is not one of: baseline, avx2"),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+    ASSERT_EQ(unsetenv("DEM_SIMD"), 0);
+    SlabSystem sim(s);   // the best this CPU runs
 }
