@@ -23,9 +23,7 @@ first() { tr ':' '\n' <<< "$1" | grep -m1 "$2"; }
     || fail "the first project library directory is $(first "$LD_LIBRARY_PATH" /platforms/), not a's"
 [ "$(first "$PATH" /platforms/)" = "$(app "$a")" ] \
     || fail "the first project application directory is $(first "$PATH" /platforms/), not a's"
-for d in "$(lib "$b")"; do
-    [ "$(count "$LD_LIBRARY_PATH" "$d")" = 0 ] || fail "b's $d is still in LD_LIBRARY_PATH"
-done
+[ "$(count "$LD_LIBRARY_PATH" "$(lib "$b")")" = 0 ] || fail "b's $(lib "$b") is still in LD_LIBRARY_PATH"
 for d in "$(app "$b")" "$b/bin"; do
     [ "$(count "$PATH" "$d")" = 0 ] || fail "b's $d is still in PATH"
 done

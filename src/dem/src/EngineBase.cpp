@@ -7,6 +7,7 @@
 #include "dem/System.hpp"
 
 #include "PairGroups.hpp"
+#include "StreamingLoops.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -56,6 +57,7 @@ EngineBase<Derived, Traits>::EngineBase(const Settings& settings, std::vector<Wa
       search_(settings.box.xMin, settings.box.xMax, settings.box.yMin, settings.box.yMax,
               largestDiameter_ + skin_)
 {
+    streamingLoops();   // a bad $DEM_SIMD is an error here, not at the first step
     constexpr double pi = 3.14159265358979323846;
     const ContactSettings& c = settings_.contact;
     std::vector<double> m(nClasses_);

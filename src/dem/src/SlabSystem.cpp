@@ -96,7 +96,6 @@ SlabSystem::SlabSystem(const Settings& settings)
     : EngineBase(validatedSlab(settings), slabWalls(settings.box, settings.slabDepth),
                  skinStartFraction, settings.neighbourSkin < 0.0)
 {
-    streamingLoops();   // a bad $DEM_SIMD is an error here, not at the first step
 }
 
 void SlabSystem::addWall(const Vec3& point, const Vec3& normal)
@@ -242,9 +241,7 @@ void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
         p.fluidX.data(), p.fluidY.data(), p.fluidZ.data(),
         p.meanVx.data(), p.meanVy.data(), p.meanVz.data()};
     const SlabKickLoop kickLoop = streamingLoops().slabSecondHalfKick;
-    const KickMode mode = !kick ? KickMode::torqueOnly
-                          : fluid ? KickMode::fluid
-                                  : KickMode::forcesOnly;
+    const KickMode mode = kickMode(kick, fluid);
     const double gx = settings_.gravity[0];
     const double gy = settings_.gravity[1];
 

@@ -43,6 +43,12 @@ struct KickArrays {
 /// (the first force evaluation).
 enum class KickMode { fluid, forcesOnly, torqueOnly };
 
+/// The mode of an engine's addWallForcesAndKick(historyDt, kick, fluid).
+inline KickMode kickMode(bool kick, bool fluid)
+{
+    return !kick ? KickMode::torqueOnly : fluid ? KickMode::fluid : KickMode::forcesOnly;
+}
+
 /// The second half-kick of particles [first, last). torque holds the sum of tangential
 /// forces of a particle without wall candidates (times its radius here) and the whole torque
 /// of one with them.

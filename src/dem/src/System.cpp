@@ -34,7 +34,6 @@ System::System(const Settings& settings)
                  settings.neighbourSkin < 0.0),
       timeStepBound_(dem::timeStepBound(settings))
 {
-    streamingLoops();   // a bad $DEM_SIMD is an error here, not inside a parallel loop
 }
 
 void System::addParticle(int cls, double x, double y, double vx, double vy, double omega)
@@ -182,9 +181,7 @@ void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
         p.omega.data(),  p.fluidX.data(), p.fluidY.data(), p.meanVx.data(), p.meanVy.data()};
 
     const KickLoop kickLoop = streamingLoops().secondHalfKick;
-    const KickMode mode = !kick ? KickMode::torqueOnly
-                          : fluid ? KickMode::fluid
-                                  : KickMode::forcesOnly;
+    const KickMode mode = kickMode(kick, fluid);
 
     std::size_t touching = 0;
     double maxOverlap = maxOverlap_;
