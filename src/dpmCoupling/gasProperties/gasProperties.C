@@ -10,7 +10,7 @@ const Foam::wordList& Foam::gasProperties::entries()
 {
     static const wordList names
     {
-        "operatingPressure", "densityAtOneBar", "viscosity", "U0byUmf",
+        "operatingPressure", "densityAtOneBar", "viscosity", "U0", "U0byUmf",
         "excessVelocity", "inletPatch"
     };
     return names;
@@ -35,6 +35,7 @@ Foam::gasProperties::gasProperties(const objectRegistry& obr)
     operatingPressure_(positiveEntry(*this, "operatingPressure")),
     densityAtOneBar_(positiveEntry(*this, "densityAtOneBar", 1.204)),
     mu_(positiveEntry(*this, "viscosity", 1.75e-5)),
+    U0_(-1),
     U0byUmf_(-1),
     excessVelocity_(-1),
     inletPatch_(lookupOrDefault<word>("inletPatch", "inlet"))
@@ -47,17 +48,24 @@ Foam::gasProperties::gasProperties(const objectRegistry& obr)
         " constant/caseSettings"
     );
 
+    const bool byVelocity = found("U0");
     const bool byRatio = found("U0byUmf");
     const bool byExcess = found("excessVelocity");
-    if (byRatio == byExcess)
+    const int nGiven = int(byVelocity) + int(byRatio) + int(byExcess);
+    if (nGiven != 1)
     {
         FatalIOErrorInFunction(*this)
-            << name() << " needs exactly one of the entries 'U0byUmf' (U0/Umf, "
-            << "in (0, inf)) and 'excessVelocity' (U0 - Umf in m/s, in "
-            << "(0, inf)); it has " << (byRatio ? "both" : "neither")
+            << name() << " needs exactly one of the entries 'U0' (the"
+            << " superficial velocity in m/s, in (0, inf)), 'U0byUmf' (U0/Umf,"
+            << " in (0, inf)) and 'excessVelocity' (U0 - Umf in m/s, in"
+            << " (0, inf)); it has " << (nGiven ? "more than one" : "none")
             << exit(FatalIOError);
     }
-    if (byRatio)
+    if (byVelocity)
+    {
+        U0_ = positiveEntry(*this, "U0");
+    }
+    else if (byRatio)
     {
         U0byUmf_ = positiveEntry(*this, "U0byUmf");
     }
@@ -72,7 +80,11 @@ Foam::string Foam::gasProperties::U0Setting() const
 {
     OStringStream os;
     os.precision(Sout.precision());     // as the log prints the other numbers
-    if (U0byUmf_ > 0)
+    if (U0_ > 0)
+    {
+        os  << "U0 " << U0_ << " m/s";
+    }
+    else if (U0byUmf_ > 0)
     {
         os  << "U0/Umf " << U0byUmf_;
     }
