@@ -7,7 +7,7 @@
 # Re = rho_g d eps s/mu) at the voidage the particle sees, solved here
 # independently by bisection. The slip s is the particle's velocity
 # relative to the gas it sees (the particle drags its cell's gas along).
-# Tolerance 2 % (issue 4). Gas cells of 15 mm keep the voidage near 1.
+# Tolerance 2 %. Gas cells of 15 mm keep the voidage near 1.
 # An isolated sphere has the same terminal velocity in formulations A and
 # B (Zhou et al. 2010): A's drag eps_g K_B (eps_g = 1 - phiP) and the
 # pressure-gradient force of the particle's own wake differ from B's by
