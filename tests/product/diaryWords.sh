@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # etc/checkDiary finds the words of a diary (numbered work periods, issue
 # numbers, helpers, one machine's paths) and lets the allow-list's
 # legitimate uses pass; then, with the argument 'tree', no tracked file of

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The documentation site builds with MkDocs in strict mode: every internal
 # link and nav entry resolves, every page is in the nav, the dictionary
 # tables list exactly the entries the code knows, every command's -h runs.
