@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # etc/licenseHeaders on a small tree of one file of each kind: the header
 # each kind must get (GPL-3.0-or-later in SPDX form, as LICENSE states), the
 # #! line kept first, data and documents untouched, a second run changing
@@ -26,15 +28,16 @@ printf '#include "foo.H"\nint y;\n' >src/app/noBanner.C
 printf '#pragma once\nint z;\n' >src/app/engine.hpp
 printf '#!/usr/bin/python3\n"""doc"""\nprint(1)\n' >tool
 printf '#!/bin/bash\necho hi\n' >run.sh
+printf '#!/bin/bash\nspdx="%s"\n' "$spdx" >quoted.sh     # a string, not a header
 printf 'project(x)\n' >CMakeLists.txt
 printf 'FoamFile {}\nkn 800;\n' >constant/particleProperties
 printf '# Title\n' >README.md
-chmod +x tool run.sh
+chmod +x tool run.sh quoted.sh
 git add -A . || fail "git add"
 cp constant/particleProperties README.md "$workDir/" || fail "copy"
 
 out="$("$script" -root "$tree")" || fail "the script failed: $out"
-[ "$out" = "licence header added to 6 files" ] || fail "expected 6 files changed, got: $out"
+[ "$out" = "licence header added to 7 files" ] || fail "expected 7 files changed, got: $out"
 
 # The OpenFOAM side: the licence block inside the existing banner
 sed -n 2p src/app/withBanner.H | grep -q "dpmFoam2D" || fail "withBanner.H: no project line after the banner's first line"
@@ -50,6 +53,7 @@ grep -q '#include "foo.H"' src/app/noBanner.C || fail "noBanner.C: its code was 
 [ "$(sed -n 3p tool)" = "# $spdx" ] || fail "tool: $(head -3 tool)"
 [ -x tool ] || fail "tool lost its execute bit"
 [ "$(sed -n 3p run.sh)" = "# $spdx" ] || fail "run.sh: $(head -3 run.sh)"
+[ "$(sed -n 3p quoted.sh)" = "# $spdx" ] || fail "quoted.sh: a string holding the SPDX text taken for a header"
 [ "$(sed -n 2p CMakeLists.txt)" = "# $spdx" ] || fail "CMakeLists.txt: $(head -2 CMakeLists.txt)"
 # Not source: untouched
 cmp -s constant/particleProperties "$workDir/particleProperties" || fail "a dictionary was changed"
