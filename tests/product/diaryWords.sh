@@ -23,7 +23,7 @@ cat >src/a.C <<'TEXT'
 // fixed for issue #16
 // see Issue 4 for the tolerance
 // scratch copy in /tmp/run3 and /work/main
-// one of the helpers found it
+// one of the helpers found it, see ../../shared/reference/model.md
 // the cell form of sessions 6-7, rerun in this session
 // the pair loop, then the kick
 TEXT
