@@ -1,9 +1,10 @@
 """Independent check of the laceyIndex function object's output.
 
 The Lacey index and the segregation indices are recomputed here from the
-particle files particles/<time>.h5 (model.md section 5; the segregation
-definitions of src/mixing/include/mixing/LaceyIndex.hpp), without the mixing
-library, and compared with postProcessing/<name>/<startTime>/*.dat.
+particle files particles/<time>.h5 (docs/theory/paper-model.md, "Lacey
+mixing index"; the segregation definitions of
+src/mixing/include/mixing/LaceyIndex.hpp), without the mixing library, and
+compared with postProcessing/<name>/<startTime>/*.dat.
 
   laceyCheck.py particles <datDir> <cellSize> <basis> <xMin> <yMin> <xMax> <yMax>
       compare every row of datDir's .dat files with particles/<time>.h5

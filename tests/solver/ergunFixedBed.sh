@@ -4,7 +4,7 @@
 # U0 = 0.5 Umf. Expected: the Ergun pressure gradient
 #   dp/dy = 150 (1-e)^2 mu Us/(e^3 d^2) + 1.75 (1-e) rho Us^2/(e^3 d)
 # (Ergun 1952) with e from Hoomans' 2D-3D conversion of the lattice's
-# porosity 1 - pi/4, and Umf from Wen and Yu. Tolerance 3 % (issue 4).
+# porosity 1 - pi/4, and Umf from Wen and Yu. Tolerance 3 %.
 #
 # The gas carries exactly the force the particles feel (momentum is
 # conserved), so its pressure gradient is (particles per volume) x (force

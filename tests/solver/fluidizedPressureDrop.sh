@@ -4,8 +4,8 @@
 # the rate at which the particles gained upward momentum over the window:
 #   dp = ((M - rho_g V_p,total) g - F_floor + (P(t1) - P(t0))/(t1 - t0)) / (W D)
 # (momentum balance of the particles, P = sum m v_y from the saved states;
-# p_rgh already excludes the gas's own hydrostatic head). Tolerance 5 %
-# (issue 4). The binary mix of the paper at w_small ~ 0.5, at U0/Umf = 2
+# p_rgh already excludes the gas's own hydrostatic head). Tolerance 5 %.
+# The binary mix of the paper at w_small ~ 0.5, at U0/Umf = 2
 # so that the large particles are fluidized too, averaged over the last
 # 1.5 s of 2 s of gas. The momentum term is not small in this narrow,
 # slugging bed: over 1.5 s it moves the balance by up to 2.3 % of the

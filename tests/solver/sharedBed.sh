@@ -1,5 +1,5 @@
 #!/bin/bash
-# A bed shared by two cases through initialBed/file (issue 13):
+# A bed shared by two cases through initialBed/file:
 #   - dpmPackBed saves it (reporting the settling every 0.1 s); run again for the same particles it keeps it
 #     (nothing packed, the file unchanged);
 #   - a second case with the same particles starts from it;

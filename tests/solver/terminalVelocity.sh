@@ -2,12 +2,12 @@
 # One 1.5 mm glass sphere falls through gas at rest at 64 bar in a closed
 # column. At its terminal velocity the drag balances weight less buoyancy:
 #   K(s, eps) s = (rho_p - rho_g) V_p g,
-# with K from the paper's drag law (Wen-Yu branch, model.md section 4:
-# K = V_p 3/4 C_D rho_g s/d eps^-2.65, C_D = 24(1 + 0.15 Re^0.687)/Re,
+# with K from the paper's drag law (Wen-Yu branch; docs/theory/paper-model.md,
+# "Gas": K = V_p 3/4 C_D rho_g s/d eps^-2.65, C_D = 24(1 + 0.15 Re^0.687)/Re,
 # Re = rho_g d eps s/mu) at the voidage the particle sees, solved here
 # independently by bisection. The slip s is the particle's velocity
 # relative to the gas it sees (the particle drags its cell's gas along).
-# Tolerance 2 % (issue 4). Gas cells of 15 mm keep the voidage near 1.
+# Tolerance 2 %. Gas cells of 15 mm keep the voidage near 1.
 # An isolated sphere has the same terminal velocity in formulations A and
 # B (Zhou et al. 2010): A's drag eps_g K_B (eps_g = 1 - phiP) and the
 # pressure-gradient force of the particle's own wake differ from B's by

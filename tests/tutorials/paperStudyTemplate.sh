@@ -3,7 +3,7 @@
 # the gas of a (wSmall, pressure) pair set in constant/caseSettings.
 # Expected, from the paper's Table 3: 0.25 -> 3945 small / 2555 large,
 # 0.5 -> 6610 / 1440, 0.75 -> 8955 / 645; gas density 1.204 x p/bar
-# (model.md section 1); U0/Umf 1.25; end time and particle interval as set.
+# (docs/theory/paper-model.md, "The case"); U0/Umf 1.25; end time and particle interval as set.
 #   1. for all 15 pairs: the dictionaries as the solver reads them
 #      (foamDictionary -expand), counts as dpmCloud computes them from
 #      massFraction and totalMass: round(w M / m);

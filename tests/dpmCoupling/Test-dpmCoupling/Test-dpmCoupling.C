@@ -119,7 +119,7 @@ int main(int argc, char *argv[])
     );
     check("Hoomans voidage of empty cell", fluidization::voidage3D(1), 1, 1e-15);
 
-    // Wen-Yu Umf of the paper's Table 3 within 7 % (model.md section 2)
+    // Wen-Yu Umf of the paper's Table 3 within 7 % (docs/theory/paper-model.md, "Minimum fluidization velocity")
     {
         const scalar wSmall[3] = {0.25, 0.5, 0.75};
         const scalar bar[4] = {1, 8, 32, 64};
