@@ -27,7 +27,8 @@ inline Rebound wallImpact(int dimension, const Material& mat, double vt, double 
                           double stepsPerContact)
 {
     const double r = 0.5 * mat.d;
-    Settings s = oneClass(mat.d, mat.rho, {-0.05, 0.05, -0.05, 0.05}, dimension, 0.03, 1.0);
+    const double size = 20.0 * mat.d;   // box half-width: far from the sphere's path
+    Settings s = oneClass(mat.d, mat.rho, {-size, size, -size, size}, dimension, 6.0 * mat.d, 1.0);
     s.dt = contactTime(sphereMass(mat.d, mat.rho), mat.kn, mat.e) / stepsPerContact;
     s.contact.kn = mat.kn;
     s.contact.kt = mat.kt;
@@ -51,7 +52,7 @@ inline Rebound wallImpact(int dimension, const Material& mat, double vt, double 
     const Vec3 n = Vec3(0.3, 1.0, 0.4).normalized();
     const Vec3 t = n.cross(Vec3(0.0, 0.0, 1.0)).normalized();
     const Vec3 a = n.cross(t);
-    const Vec3 onWall(0.0, -0.02, 0.015);
+    const Vec3 onWall(0.0, -0.4 * size, 3.0 * mat.d);
     sim.addWall(onWall, n);
     sim.addParticle(0, onWall + (r + gap) * n - 10.0 * vt * s.dt * t, vt * t - vn * n, w0 * a);
     const PlaneWall3& wall = sim.walls().back();
