@@ -135,11 +135,11 @@ std::vector<double> flightApexes(int dimension, double kn, double e, int count, 
 TEST(MfixDem02, BounceApexesMatchMfixAndTheHardSphereFormula)
 {
     // References: (1) MFIX's linear spring-dashpot apexes (same law, gravity acting during
-    // the contact), every bounce of the table higher than r + 1 % of h0 - r, within 1 % of h0 - r: MFIX's
-    // Adams-Bashforth step carries its own error of that order (at kn 5e5, e 0.7 its first
-    // apex is 0.2906 m where this law gives 0.2923-0.2928 m with dt from tc/200 to
-    // tc/4000); (2) the hard-sphere apex formula for the stiffest spring kn = 5e6 N/m over the
-    // first 10 bounces, within 1 % of h0 - r: a soft contact under gravity changes the
+    // the contact), every bounce of the table higher than r + 1 % of h0 - r, within 1 % of
+    // h0 - r: MFIX's Adams-Bashforth step carries its own error of that order (at kn 5e5,
+    // e 0.7 its first apex is 0.2906 m where this law gives 0.2923-0.2928 m with dt from
+    // tc/200 to tc/4000); (2) the hard-sphere apex formula for the stiffest spring
+    // kn = 5e6 N/m over the first 10 bounces, within 1 % of h0 - r: a soft contact under gravity changes the
     // rebound by ~g tc/v (tc = 4.6 ms, v >= 1.3 m/s: <= 3.5 % of e) which reaches ~0.5 % of
     // h0 - r, while for the softer springs that effect reaches 8 % (MFIX's own apexes show
     // it) and only (1) applies. dt = tc/200.
