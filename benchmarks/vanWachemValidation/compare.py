@@ -98,16 +98,17 @@ def uniform(t, x, rate):
     return 0.5 * (edges[1:] + edges[:-1]), mean
 
 
-def dominant_frequency(x, rate):
+def dominant_frequency(x, rate, lowest):
     """(frequency, resolution) of the peak of the Hann-windowed periodogram
-    of the whole record, zero-padded to FREQUENCY_STEP, above one cycle per
-    record; the resolution is 1/record."""
+    of the whole record, zero-padded to FREQUENCY_STEP, at or above lowest
+    (the same band for the experiment and the runs); the resolution is
+    1/record."""
     n = len(x)
     span = n / rate
     nfft = max(n, int(round(rate / FREQUENCY_STEP)))
     power = np.abs(np.fft.rfft((x - x.mean()) * np.hanning(n), nfft)) ** 2
     f = np.fft.rfftfreq(nfft, 1.0 / rate)
-    band = f >= 1.0 / span
+    band = (f >= lowest - 1e-9) & (f > 0)
     if not band.any():
         return np.nan, np.nan
     return f[band][np.argmax(power[band])], 1.0 / span
@@ -125,7 +126,9 @@ def signal_statistics(t, x, kind):
     n = int(round((WINDOWS[kind][1] - WINDOWS[kind][0]) * rate))
     chunks = [xu[k:k + n] for k in range(0, len(xu) - n + 1, n)] or [xu]
     s["peakToPeak"] = float(np.median([np.ptp(c) for c in chunks]))
-    s["frequency"], s["resolution"] = dominant_frequency(xu, rate)
+    # one cycle per experiment's record: the lowest frequency it shows
+    s["frequency"], s["resolution"] = dominant_frequency(
+        xu, rate, 1.0 / (WINDOWS[kind][1] - WINDOWS[kind][0]))
     nseg = min(len(xu), int(round(SEGMENTS[kind] * rate)))
     s["f"], s["psd"] = signal.welch(xu - xu.mean(), fs=rate, window="hann",
                                     nperseg=nseg, noverlap=nseg // 2)
