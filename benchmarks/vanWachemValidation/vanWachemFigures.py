@@ -10,7 +10,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 SIGNALS = [  # record, title, unit, scale
-    ("pressure", "pressure fluctuation, 45 mm above the distributor", "Pa", 1.0),
+    ("pressure", "pressure fluctuation at 45 mm", "Pa", 1.0),
     ("height", "bed height", "mm", 1e3),
 ]
 
