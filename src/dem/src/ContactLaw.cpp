@@ -25,6 +25,12 @@ ContactLaw makeContactLaw(double mEff, double kn, double kt, double e, double mu
     return law;
 }
 
+void addRollingResistance(ContactLaw& law, double muR, double rRolling, double iEff, double dt)
+{
+    law.rollingTorquePerForce = muR * rRolling;
+    law.rollingTorquePerSpin = iEff / (rollingStopSteps * dt);
+}
+
 double contactDuration(double mEff, double kn, double etaN)
 {
     const double a = etaN / (2.0 * mEff);

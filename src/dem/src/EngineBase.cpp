@@ -60,18 +60,26 @@ EngineBase<Derived, Traits>::EngineBase(const Settings& settings, std::vector<Wa
     streamingLoops();   // a bad $DEM_SIMD is an error here, not at the first step
     constexpr double pi = 3.14159265358979323846;
     const ContactSettings& c = settings_.contact;
-    std::vector<double> m(nClasses_);
+    std::vector<double> m(nClasses_), r(nClasses_), inertia(nClasses_);
     for (int k = 0; k < nClasses_; ++k) {
         const double d = settings_.classes[k].diameter;
         m[k] = settings_.classes[k].density * pi * d * d * d / 6.0;
+        r[k] = 0.5 * d;
+        inertia[k] = m[k] * d * d / 10.0;   // a solid sphere, as Particles has it
     }
     for (int a = 0; a < nClasses_; ++a) {
         for (int b = 0; b < nClasses_; ++b) {
             const double mEff = m[a] * m[b] / (m[a] + m[b]);
-            pairLaws_.push_back(makeContactLaw(mEff, c.kn, c.kt, c.restitution, c.frictionParticle));
+            ContactLaw law = makeContactLaw(mEff, c.kn, c.kt, c.restitution, c.frictionParticle);
+            addRollingResistance(law, c.rollingFriction, r[a] * r[b] / (r[a] + r[b]),
+                                 inertia[a] * inertia[b] / (inertia[a] + inertia[b]), settings_.dt);
+            pairLaws_.push_back(law);
         }
-        wallLaws_.push_back(makeContactLaw(m[a], c.kn, c.kt, c.restitutionWall, c.frictionWall));
+        ContactLaw law = makeContactLaw(m[a], c.kn, c.kt, c.restitutionWall, c.frictionWall);
+        addRollingResistance(law, c.rollingFrictionWall, r[a], inertia[a], settings_.dt);
+        wallLaws_.push_back(law);
     }
+    rolling_ = c.rollingFriction > 0.0 || c.rollingFrictionWall > 0.0;
 }
 
 template <class Derived, class Traits>

@@ -102,6 +102,8 @@ void validateSettings(const Settings& s)
     requireRestitution(c.restitutionWall, "restitutionWall");
     requireNonNegative(c.frictionParticle, "frictionParticle");
     requireNonNegative(c.frictionWall, "frictionWall");
+    requireNonNegative(c.rollingFriction, "rollingFriction");
+    requireNonNegative(c.rollingFrictionWall, "rollingFrictionWall");
 
     const Box& b = s.box;
     if (!(b.xMax > b.xMin) || !std::isfinite(b.xMax - b.xMin)) {

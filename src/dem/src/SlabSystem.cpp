@@ -140,6 +140,16 @@ void SlabSystem::addParticle(int cls, const Vec3& pos, const Vec3& vel, const Ve
 
 void SlabSystem::computePairForces(double historyDt)
 {
+    if (rolling_) {
+        sumPairForces<true>(historyDt);
+    } else {
+        sumPairForces<false>(historyDt);
+    }
+}
+
+template <bool Rolling>
+void SlabSystem::sumPairForces(double historyDt)
+{
     SlabParticles& p = p_;
     const std::size_t n = p.size();
     const int* pi = pairs_.i.data();
@@ -170,13 +180,22 @@ void SlabSystem::computePairForces(double historyDt)
         g.vRel = Vec3(a.vx[i] - a.vx[j], a.vy[i] - a.vy[j], a.vz[i] - a.vz[j])
                  + (g.rI * wI + g.rJ * wJ).cross(g.nHat);
         g.xiT = xiT[k];
-        const PairForce3 f = contactForce(g, laws[law[k]], historyDt);
+        if constexpr (Rolling) g.omegaRel = wI - wJ;
+        const PairForce3 f = contactForce<3, Rolling>(g, laws[law[k]], historyDt);
         xiT[k] = f.xiT;
         const Vec3 nxF = g.nHat.cross(f.ft);
         a.fx[i] += f.force.x(); a.fy[i] += f.force.y(); a.fz[i] += f.force.z();
         a.fx[j] -= f.force.x(); a.fy[j] -= f.force.y(); a.fz[j] -= f.force.z();
-        a.tx[i] += nxF.x(); a.ty[i] += nxF.y(); a.tz[i] += nxF.z();
-        a.tx[j] += nxF.x(); a.ty[j] += nxF.y(); a.tz[j] += nxF.z();
+        if constexpr (Rolling) {
+            // The rolling torque over the radius the torque sums are multiplied by
+            const Vec3 ti = nxF + f.rollingTorque / g.rI;
+            const Vec3 tj = nxF - f.rollingTorque / g.rJ;
+            a.tx[i] += ti.x(); a.ty[i] += ti.y(); a.tz[i] += ti.z();
+            a.tx[j] += tj.x(); a.ty[j] += tj.y(); a.tz[j] += tj.z();
+        } else {
+            a.tx[i] += nxF.x(); a.ty[i] += nxF.y(); a.tz[i] += nxF.z();
+            a.tx[j] += nxF.x(); a.ty[j] += nxF.y(); a.tz[j] += nxF.z();
+        }
         ++touching;
         maxOverlap = std::max(maxOverlap, g.overlap);
     };
@@ -215,6 +234,16 @@ void SlabSystem::computePairForces(double historyDt)
 }
 
 void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
+{
+    if (rolling_) {
+        addWallForcesAndKickWith<true>(historyDt, kick, fluid);
+    } else {
+        addWallForcesAndKickWith<false>(historyDt, kick, fluid);
+    }
+}
+
+template <bool Rolling>
+void SlabSystem::addWallForcesAndKickWith(double historyDt, bool kick, bool fluid)
 {
     const Index n = static_cast<Index>(p_.size());
     const double h = 0.5 * settings_.dt;
@@ -284,7 +313,8 @@ void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
             c.rI = ri;
             c.rJ = 0.0;
             c.xiT = wXi[s];
-            const PairForce3 f = contactForce(c, wallLaws[p.classIndex[i]], historyDt);
+            if constexpr (Rolling) c.omegaRel = p.spin(i);
+            const PairForce3 f = contactForce<3, Rolling>(c, wallLaws[p.classIndex[i]], historyDt);
             p.fx[i] += f.force.x(); p.fy[i] += f.force.y(); p.fz[i] += f.force.z();
             p.tx[i] += f.torqueI.x(); p.ty[i] += f.torqueI.y(); p.tz[i] += f.torqueI.z();
             wXi[s] = f.xiT;

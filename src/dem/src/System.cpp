@@ -73,6 +73,16 @@ void System::addParticle(int cls, double x, double y, double vx, double vy, doub
 
 void System::computePairForces(double historyDt)
 {
+    if (rolling_) {
+        sumPairForces<true>(historyDt);
+    } else {
+        sumPairForces<false>(historyDt);
+    }
+}
+
+template <bool Rolling>
+void System::sumPairForces(double historyDt)
+{
     const int* pi = pairs_.i.data();
     const int* pj = pairs_.j.data();
     const int* law = pairs_.law.data();
@@ -112,14 +122,21 @@ void System::computePairForces(double historyDt)
         g.rI = r[i];
         g.rJ = r[j];
         g.xiT = xiT[k];
-        const PairForce f = contactForce(g, laws[law[k]], historyDt);
+        if constexpr (Rolling) g.omegaRel = om[i] - om[j];
+        const PairForce f = contactForce<2, Rolling>(g, laws[law[k]], historyDt);
         xiT[k] = f.xiT;
         sumFx[i] += f.force.x();
         sumFy[i] += f.force.y();
-        sumFt[i] += f.ft;   // the torque on either partner is r ft (see contactForce)
         sumFx[j] -= f.force.x();
         sumFy[j] -= f.force.y();
-        sumFt[j] += f.ft;
+        if constexpr (Rolling) {
+            // The rolling torque over the radius the torque sums are multiplied by
+            sumFt[i] += f.ft + f.rollingTorque / r[i];
+            sumFt[j] += f.ft - f.rollingTorque / r[j];
+        } else {
+            sumFt[i] += f.ft;   // the torque on either partner is r ft (see contactForce)
+            sumFt[j] += f.ft;
+        }
         ++touching;
         maxOverlap = std::max(maxOverlap, g.overlap);
     };
@@ -156,6 +173,16 @@ void System::computePairForces(double historyDt)
 }
 
 void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
+{
+    if (rolling_) {
+        addWallForcesAndKickWith<true>(historyDt, kick, fluid);
+    } else {
+        addWallForcesAndKickWith<false>(historyDt, kick, fluid);
+    }
+}
+
+template <bool Rolling>
+void System::addWallForcesAndKickWith(double historyDt, bool kick, bool fluid)
 {
     const Index n = static_cast<Index>(p_.size());
     const double h = 0.5 * settings_.dt;
@@ -221,7 +248,8 @@ void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
                 g.rI = ri;
                 g.rJ = 0.0;
                 g.xiT = wXi[s];
-                const PairForce f = contactForce(g, wallLaws[p.classIndex[i]], historyDt);
+                if constexpr (Rolling) g.omegaRel = p.omega[i];
+                const PairForce f = contactForce<2, Rolling>(g, wallLaws[p.classIndex[i]], historyDt);
                 fx += f.force.x();
                 fy += f.force.y();
                 torque += f.torqueI;

@@ -103,6 +103,10 @@ dem::Settings Foam::dpmCloud::demSettings() const
     cs.frictionParticle =
         contact.lookupOrDefault<scalar>("frictionParticle", cs.frictionParticle);
     cs.frictionWall = contact.lookupOrDefault<scalar>("frictionWall", cs.frictionWall);
+    cs.rollingFriction =
+        contact.lookupOrDefault<scalar>("rollingFriction", cs.rollingFriction);
+    cs.rollingFrictionWall =
+        contact.lookupOrDefault<scalar>("rollingFrictionWall", cs.rollingFrictionWall);
 
     s.box = dem::Box{grid_.xMin(), grid_.xMax(), grid_.yMin(), grid_.yMax()};
     s.gravity[0] = g_.x();

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>   // cross products of the 3D kernel
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 
@@ -34,6 +35,7 @@ template <int Dim> struct PairGeometryT {
     double rI;               ///< lever arm of i, m
     double rJ;               ///< lever arm of j, m (0 for a wall)
     Rotational xiT;          ///< stored tangential spring displacement (2D: along tHat), m
+    Rotational omegaRel;     ///< w_i - w_j (w_i for a wall), rad/s; read with rolling resistance
 };
 
 /// Result of one contact evaluation.
@@ -45,6 +47,7 @@ template <int Dim> struct PairForceT {
     Rotational torqueJ;      ///< on j, N m
     Rotational ft;           ///< tangential force on i (2D: along tHat), N
     Rotational xiT;          ///< updated tangential displacement, m
+    Rotational rollingTorque;   ///< rolling resistance on i (j receives minus it), N m; with it only
 };
 
 using PairGeometry = PairGeometryT<2>;
@@ -80,6 +83,26 @@ inline double normalForce(double overlap, double vn, const ContactLaw& law)
     return law.kn * overlap + law.etaN * vn;
 }
 
+/// Constant-torque rolling resistance (Ai et al. 2011, type A; model.md, "Rolling
+/// resistance"): a torque of magnitude mu_r R_r Fn against the relative rolling w_r, clamped
+/// to |w_r| I_eff/(n dt) so that it stops the rolling without reversing it. In 3D w_r is the
+/// part of w_i - w_j in the tangent plane (the twist about nHat is not rolling).
+template <int Dim>
+[[gnu::always_inline]] inline typename ContactTypes<Dim>::Rotational
+rollingTorque(const PairGeometryT<Dim>& g, double fn, const ContactLaw& law)
+{
+    const double limit = law.rollingTorquePerForce * std::max(fn, 0.0);
+    if constexpr (Dim == 2) {
+        const double m = std::min(limit, law.rollingTorquePerSpin * std::abs(g.omegaRel));
+        return -std::copysign(m, g.omegaRel);
+    } else {
+        const Eigen::Vector3d rolling = g.omegaRel - g.omegaRel.dot(g.nHat) * g.nHat;
+        const double w = rolling.norm();
+        const double m = std::min(limit, law.rollingTorquePerSpin * w);
+        return w > 0.0 ? Eigen::Vector3d(-(m / w) * rolling) : Eigen::Vector3d::Zero();
+    }
+}
+
 /// Linear spring-dashpot with Coulomb friction (model.md section 3).
 ///
 /// The tangential spring lives in the tangent plane of the contact. In 3D the stored
@@ -91,10 +114,11 @@ inline double normalForce(double overlap, double vn, const ContactLaw& law)
 /// set to the limit and the stored displacement is reset so that the spring alone carries it,
 /// xi = -Ft/kt. Dashpot velocity is the one passed in vRel. dt = 0 evaluates without
 /// accumulating history. Torques: (r_i nHat) x Ft on i and (r_j nHat) x Ft on j (its lever
-/// arm -r_j nHat times its force -Ft).
+/// arm -r_j nHat times its force -Ft). With Rolling, the rolling torque is added to both
+/// (rollingTorque on i, its opposite on j) and returned apart in rollingTorque.
 /// Always inlined: GCC's size heuristics kept the 3D kernel out of line, called through
 /// the shared library's PLT from every pair loop (40 % of a slab run's samples in the call).
-template <int Dim>
+template <int Dim, bool Rolling = false>
 [[gnu::always_inline]] inline PairForceT<Dim> contactForce(const PairGeometryT<Dim>& g, const ContactLaw& law, double dt)
 {
     PairForceT<Dim> out;
@@ -120,6 +144,11 @@ template <int Dim>
         out.torqueJ = g.rJ * ft;
         out.ft = ft;
         out.xiT = xiT;
+        if constexpr (Rolling) {
+            out.rollingTorque = rollingTorque(g, fn, law);
+            out.torqueI += out.rollingTorque;
+            out.torqueJ -= out.rollingTorque;
+        }
     } else {
         const double vn = g.vRel.dot(g.nHat);
         const double fn = normalForce(g.overlap, vn, law);
@@ -143,6 +172,11 @@ template <int Dim>
         out.torqueJ = g.rJ * nxF;
         out.ft = ft;
         out.xiT = xi;
+        if constexpr (Rolling) {
+            out.rollingTorque = rollingTorque(g, fn, law);
+            out.torqueI += out.rollingTorque;
+            out.torqueJ -= out.rollingTorque;
+        }
     }
     return out;
 }

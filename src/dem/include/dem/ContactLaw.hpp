@@ -11,6 +11,12 @@ struct ContactLaw {
     double etaN;   ///< normal damping, N s/m
     double etaT;   ///< tangential damping, N s/m (= etaN, as the paper's Table 1 has one eta)
     double mu;     ///< sliding friction coefficient
+    /// Rolling resistance (model.md, "Rolling resistance"): mu_r R_r, the largest rolling
+    /// torque per newton of normal force, m; 0 without rolling resistance.
+    double rollingTorquePerForce = 0.0;
+    /// I_eff/(n dt): the rolling torque per unit relative rolling speed below which it is
+    /// clamped, so that it stops the relative rolling in n steps at the fastest, N m s.
+    double rollingTorquePerSpin = 0.0;
 };
 
 /// Normal damping that gives restitution e for a head-on collision of effective mass mEff:
@@ -19,6 +25,15 @@ double dampingFromRestitution(double mEff, double kn, double e);
 
 /// Law for a contact of effective mass mEff (m_i m_j/(m_i + m_j), or m_i for a wall).
 ContactLaw makeContactLaw(double mEff, double kn, double kt, double e, double mu);
+
+/// Adds the constant-torque rolling resistance of coefficient muR to `law`, for a contact of
+/// rolling radius rRolling (r_i r_j/(r_i + r_j), or r_i for a wall, m) and effective moment
+/// of inertia iEff (I_i I_j/(I_i + I_j), or I_i for a wall, kg m^2) at the DEM step dt.
+void addRollingResistance(ContactLaw& law, double muR, double rRolling, double iEff, double dt);
+
+/// Steps over which the clamped rolling torque stops the relative rolling at the fastest:
+/// with n = 4 a particle's rolling torques stay stable with up to eight contacts.
+constexpr double rollingStopSteps = 4.0;
 
 /// Duration of a head-on contact of the linear spring-dashpot, pi / sqrt(kn/mEff - (etaN/(2 mEff))^2), s.
 double contactDuration(double mEff, double kn, double etaN);

@@ -146,6 +146,7 @@ protected:
     std::vector<Wall> walls_;
     std::vector<ContactLaw> pairLaws_;   // nClasses x nClasses
     std::vector<ContactLaw> wallLaws_;   // per class
+    bool rolling_ = false;               // some law has rolling resistance: its loops run
     ParticleArrays p_;
     PairListT<History> pairs_;
     WallListT<History> wallContacts_;

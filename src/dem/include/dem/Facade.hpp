@@ -27,6 +27,10 @@ struct ContactSettings {
     double restitutionWall = 0.97;     ///< particle-wall, in (0, 1]
     double frictionParticle = 0.15;    ///< sliding friction particle-particle, >= 0
     double frictionWall = 0.10;        ///< sliding friction particle-wall, >= 0
+    /// Rolling resistance mu_r particle-particle, >= 0 (0: none): a torque of at most
+    /// mu_r R_r Fn against the relative rolling (model.md, "Rolling resistance").
+    double rollingFriction = 0.0;
+    double rollingFrictionWall = 0.0;  ///< rolling resistance particle-wall, >= 0
 };
 
 /// The domain: four plane walls x = xMin, x = xMax, y = yMin, y = yMax (m).

@@ -75,6 +75,9 @@ private:
     /// Adds the wall contacts to the pair sums and does the second half-kick (kick = false:
     /// only the forces, for the first evaluation).
     void addWallForcesAndKick(double historyDt, bool kick, bool fluid);
+    /// The two loops with or without rolling resistance, chosen once per step.
+    template <bool Rolling> void sumPairForces(double historyDt);
+    template <bool Rolling> void addWallForcesAndKickWith(double historyDt, bool kick, bool fluid);
     [[noreturn]] void throwLostParticle() const;
 
     static constexpr double skinStartFraction = 0.4;   // of d_min, the adaptive skin's start

@@ -1,0 +1,171 @@
+// Constant-torque rolling resistance (Ai, Chen, Rotter and Ooi 2011, "type A"; model.md,
+// "Rolling resistance") in both engines: a sphere rolling on the floor decelerates at the
+// model's rate and stops where and when it predicts; on a slope it holds below the angle the
+// model allows and rolls above it at the predicted acceleration. Expected values are derived
+// here from rigid-body mechanics (the 2D engine's discs have a sphere's I = m d^2/10):
+//   rolling without slip, torque M = mu_r r m g cos(theta) against the spin, friction F:
+//   m a = m g sin(theta) - F,  I a / r = F r - M   =>   a = g (sin - mu_r cos) / (1 + I/(m r^2)),
+//   at rest while tan(theta) <= mu_r (the torque balance F r = M with F = m g sin(theta)).
+// On a slope below that angle the clamped torque (at most I |w| / (n dt), n = 4 steps) lets the
+// sphere creep at the speed where it balances F r: v = n dt g sin(theta) m r^2 / I, which
+// vanishes with dt; the test checks that speed.
+
+#include "TestHelpers.hpp"
+#include "dem/ContactKernel.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+using namespace dem;
+using namespace dem::test;
+
+namespace {
+
+constexpr double g = 9.81;
+constexpr double muR = 0.1;
+constexpr double inertiaRatio = 0.4;   // I/(m r^2) of a solid sphere
+
+/// One small sphere on the floor y = 0 of the engine of `dimension`, rolling along x at v0
+/// without slip, under gravity tilted by theta (a slope), with rolling resistance muR.
+std::unique_ptr<Simulation> roller(int dimension, double v0, double theta, double dt = 1e-5)
+{
+    Settings s = paperSettings({0.0, 0.1, 0.0, 0.02}, dt);
+    s.gravity[0] = g * std::sin(theta);
+    s.gravity[1] = -g * std::cos(theta);
+    s.contact.frictionWall = 0.5;   // no slip at these angles and rates
+    s.contact.rollingFrictionWall = muR;
+    s.dimension = dimension;
+    s.slabDepth = dimension == 3 ? 0.01 : 0.0;
+    auto sim = std::make_unique<Simulation>(s);
+    const double r = 0.5 * dSmall;
+    if (dimension == 2) {
+        sim->addParticle(0, 0.01, r, v0, 0.0, -v0 / r);
+    } else {
+        sim->addParticle(0, {0.01, r, 0.005}, {v0, 0.0, 0.0}, {0.0, 0.0, -v0 / r});
+    }
+    return sim;
+}
+
+const char* engineName(int dimension) { return dimension == 2 ? "2D" : "slab"; }
+
+} // namespace
+
+TEST(RollingResistance, RollingSphereStopsAtPredictedDistanceAndTime)
+{
+    const double v0 = 0.1;
+    const double a = muR * g / (1.0 + inertiaRatio);   // deceleration, m/s^2
+    const double tStop = v0 / a;
+    const double distance = v0 * v0 / (2.0 * a);
+    for (int dimension : {2, 3}) {
+        auto sim = roller(dimension, v0, 0.0);
+        const double x0 = sim->x()[0];
+        double stopped = -1.0;
+        double vHalf = 0.0;
+        const double dt = sim->settings().dt;
+        while (sim->time() < 1.5 * tStop) {
+            sim->advance(dt);
+            if (std::abs(sim->time() - 0.5 * tStop) < 0.5 * dt) vHalf = sim->vx()[0];
+            if (stopped < 0.0 && sim->vx()[0] <= 1e-3 * v0) stopped = sim->time();
+        }
+        // Within 1 %: the rate at half time, the stop, the distance; then at rest
+        EXPECT_NEAR(vHalf, 0.5 * v0, 0.01 * 0.5 * v0) << engineName(dimension);
+        EXPECT_NEAR(stopped, tStop, 0.01 * tStop) << engineName(dimension);
+        EXPECT_NEAR(sim->x()[0] - x0, distance, 0.01 * distance) << engineName(dimension);
+        EXPECT_LT(std::abs(sim->vx()[0]), 1e-4 * v0) << engineName(dimension);
+        EXPECT_LT(std::abs(sim->omegaZ()[0]), 1e-4 * v0 / (0.5 * dSmall)) << engineName(dimension);
+    }
+}
+
+TEST(RollingResistance, SphereOnSlopeHoldsBelowTheBoundAndRollsAbove)
+{
+    for (int dimension : {2, 3}) {
+        // Below: tan(theta) = mu_r / 2, the creep speed of the clamp and no more
+        const double below = std::atan(0.5 * muR);
+        auto held = roller(dimension, 0.0, below);
+        const double dt = held->settings().dt;
+        held->advance(0.3);
+        const double creep = dem::rollingStopSteps * dt * g * std::sin(below) / inertiaRatio;
+        EXPECT_NEAR(held->vx()[0], creep, 0.05 * creep) << engineName(dimension);
+        const double x1 = held->x()[0];
+        held->advance(0.2);
+        EXPECT_NEAR(held->x()[0] - x1, 0.2 * creep, 0.05 * 0.2 * creep) << engineName(dimension);
+        // Halving the step halves the creep: at rest as dt -> 0
+        auto finer = roller(dimension, 0.0, below, 0.5 * dt);
+        finer->advance(0.3);
+        EXPECT_NEAR(finer->vx()[0], 0.5 * creep, 0.05 * 0.5 * creep) << engineName(dimension);
+
+        // Above: tan(theta) = 2 mu_r, rolling at a = g (sin - mu_r cos) / (1 + I/(m r^2))
+        const double above = std::atan(2.0 * muR);
+        auto rolls = roller(dimension, 0.0, above);
+        const double a = g * (std::sin(above) - muR * std::cos(above)) / (1.0 + inertiaRatio);
+        rolls->advance(0.1);
+        const double v1 = rolls->vx()[0];
+        rolls->advance(0.2);
+        const double v2 = rolls->vx()[0];
+        EXPECT_NEAR((v2 - v1) / 0.2, a, 0.01 * a) << engineName(dimension);
+        const double r = 0.5 * dSmall;
+        EXPECT_NEAR(rolls->omegaZ()[0], -v2 / r, 0.01 * v2 / r) << engineName(dimension);
+    }
+}
+
+TEST(RollingResistance, OffByDefaultAndNegativeRefused)
+{
+    const Settings s = paperSettings({0.0, 0.1, 0.0, 0.02});
+    EXPECT_EQ(s.contact.rollingFriction, 0.0);
+    EXPECT_EQ(s.contact.rollingFrictionWall, 0.0);
+    for (int which : {0, 1}) {
+        Settings bad = s;
+        (which == 0 ? bad.contact.rollingFriction : bad.contact.rollingFrictionWall) = -0.1;
+        try {
+            Simulation sim(bad);
+            ADD_FAILURE() << "a negative rolling friction was accepted";
+        } catch (const Error& e) {
+            const std::string expected =
+                std::string(which == 0 ? "rollingFriction" : "rollingFrictionWall")
+                + " = -0.1 is outside [0, inf)";
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(RollingResistance, PairTorqueIsMuRTimesRollingRadiusTimesNormalForceAndOpposite)
+{
+    // Two spheres of radii 1 and 2 mm pressed together, turning relative to each other: the
+    // torque on i is mu_r R_r Fn against w_i - w_j (R_r = r_i r_j/(r_i + r_j)), on j its
+    // opposite; a relative rolling too slow for the full torque gets I_eff |w|/(n dt).
+    const double ri = 1e-3, rj = 2e-3, dt = 1e-5;
+    const double mi = sphereMass(2 * ri), mj = sphereMass(2 * rj);
+    const double ii = 0.4 * mi * ri * ri, ij = 0.4 * mj * rj * rj;
+    ContactLaw law = makeContactLaw(mi * mj / (mi + mj), 800.0, -1.0, 0.9, 0.3);
+    addRollingResistance(law, muR, ri * rj / (ri + rj), ii * ij / (ii + ij), dt);
+    const double overlap = 1e-6;
+    const double fn = 800.0 * overlap;   // at rest: the spring alone
+    const double full = muR * ri * rj / (ri + rj) * fn;
+
+    PairGeometry g2{overlap, {1.0, 0.0}, {0.0, 0.0}, ri, rj, 0.0, 5.0};
+    const PairForce f2 = contactForce<2, true>(g2, law, dt);
+    EXPECT_NEAR(f2.rollingTorque, -full, 1e-12 * full);
+    EXPECT_NEAR(f2.torqueI - ri * f2.ft, -full, 1e-12 * full);
+    EXPECT_NEAR(f2.torqueJ - rj * f2.ft, full, 1e-12 * full);
+
+    const double slow = 1e-3 * full * rollingStopSteps * dt * (1 / ii + 1 / ij);
+    g2.omegaRel = -slow;
+    const double clamped = contactForce<2, true>(g2, law, dt).rollingTorque;
+    EXPECT_NEAR(clamped, slow / (rollingStopSteps * dt * (1 / ii + 1 / ij)), 1e-9 * full);
+
+    // 3D: the twist about nHat is not rolling; the rolling part (0, 3, 4) gets the torque
+    PairGeometry3 g3;
+    g3.overlap = overlap;
+    g3.nHat = Eigen::Vector3d(1.0, 0.0, 0.0);
+    g3.vRel.setZero();
+    g3.rI = ri;
+    g3.rJ = rj;
+    g3.xiT.setZero();
+    g3.omegaRel = Eigen::Vector3d(7.0, 3.0, 4.0);
+    const PairForce3 f3 = contactForce<3, true>(g3, law, dt);
+    const Eigen::Vector3d expected = -full * Eigen::Vector3d(0.0, 0.6, 0.8);
+    EXPECT_LT((f3.rollingTorque - expected).norm(), 1e-12 * full);
+    EXPECT_LT((f3.torqueI + f3.torqueJ).norm(), 1e-12 * full);   // no tangential force here
+}
