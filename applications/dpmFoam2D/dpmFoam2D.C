@@ -33,12 +33,25 @@ Usage
 #include "dpmCloud.H"
 #include "solverTimers.H"
 #include "caseChecks.H"
+#include "caseLock.H"
 #include "incompleteTimes.H"
 #include "writeFailureReason.H"
 #include "fixedValueFvPatchFields.H"
 #include "staticReconstruction.H"
 
 #define PIMPLE_CONTROL
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+//- The step that ends the run (Time::run's test), unless told to stop
+//  without writing
+static bool lastStep(const Foam::Time& runTime)
+{
+    return
+        runTime.value()
+     >= runTime.endTime().value() - 0.5*runTime.deltaTValue()
+     && runTime.stopAt() != Foam::Time::stopAtControls::saNoWriteNow;
+}
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -56,11 +69,13 @@ int main(int argc, char *argv[])
         "Name of the particle cloud (default 'particles')"
     );
 
+    caseChecks::caseNameCharacters(argc, argv);
     #include "postProcess.H"
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     caseChecks::serialRun(args.executable());    // threads, not MPI
+    const caseLock lock(args.path(), args.executable());  // one run a case
     #include "setAsideIncompleteTimes.H"
     #include "createTime.H"
     Sout.precision(8);      // a readable log; fields keep writePrecision
@@ -148,7 +163,17 @@ int main(int argc, char *argv[])
         }
 
         timers.start();
-        particles.writeParticlesIfDue();
+        // The end time is saved whatever the write intervals: a finished
+        // run leaves its last state to continue from or to look at
+        const bool endTimeStep = lastStep(runTime);
+        if (endTimeStep)
+        {
+            particles.writeParticles();
+        }
+        else
+        {
+            particles.writeParticlesIfDue();
+        }
         if (runTime.writeTime())
         {
             particles.reportBalance(Info);
