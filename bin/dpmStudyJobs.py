@@ -80,8 +80,9 @@ def take_lock(directory):
     """directory's lock for this process (a descriptor), or None when
     another process holds it. A child given the descriptor
     (DPMFOAM2D_LOCK_FD) holds it on after this process closes its copy."""
-    fd = os.open(os.path.join(directory, LOCK_FILE), os.O_RDWR | os.O_CREAT | os.O_CLOEXEC,
-                 0o644)
+    path = os.path.join(directory, LOCK_FILE)
+    # read-only: no file open for writing (a remount read-only would fail)
+    fd = os.open(path, os.O_RDONLY | os.O_CREAT | os.O_CLOEXEC, 0o644)
     for attempt in range(10):       # a look by lock_holder holds it an instant
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
@@ -93,8 +94,8 @@ def take_lock(directory):
         return None
     line = "dpmStudy (pid %d on %s, started %s)\n" % (
         os.getpid(), os.uname().nodename, time.strftime("%Y-%m-%d %H:%M:%S UTC", time.gmtime()))
-    os.ftruncate(fd, 0)
-    os.pwrite(fd, line.encode(), 0)
+    with open(path, "w") as f:      # the lock stays with fd
+        f.write(line)
     return fd
 
 

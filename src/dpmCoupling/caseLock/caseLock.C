@@ -62,7 +62,9 @@ Foam::caseLock::caseLock(const fileName& dir, const word& application)
 {
     if (fd_ < 0)
     {
-        fd_ = ::open(file_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        // Read-only: a file open for writing would keep its file system
+        // from being remounted read-only (flock needs no write access)
+        fd_ = ::open(file_.c_str(), O_RDONLY | O_CREAT | O_CLOEXEC, 0644);
     }
     if (fd_ < 0)
     {
@@ -106,11 +108,11 @@ Foam::caseLock::caseLock(const fileName& dir, const word& application)
     const std::string line =
         std::string(application) + " (pid " + std::to_string(::getpid())
       + " on " + hostName() + ", started " + started + ")\n";
-    if
-    (
-        ::ftruncate(fd_, 0) != 0
-     || ::pwrite(fd_, line.data(), line.size(), 0) != ssize_t(line.size())
-    )
+    const int out = ::open(file_.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    const bool written =
+        out >= 0 && ::write(out, line.data(), line.size()) == ssize_t(line.size());
+    if (out >= 0) ::close(out);     // the lock stays with fd_
+    if (!written)
     {
         WarningInFunction
             << "Cannot write the holder into " << file_ << ": "
