@@ -21,6 +21,10 @@ Description
     its own, with their voidage and reaction of the step before. See
     docs/model.md.
 
+    One run a case: the run locks it (caseLock), a second is refused naming
+    the first; -postProcess takes no lock. The end time is written whatever
+    the write intervals, so a finished run ends with its state on disk.
+
 Usage
     dpmFoam2D [-cloud name] [-postProcess [-func name]]
 
