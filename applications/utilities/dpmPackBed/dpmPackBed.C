@@ -127,7 +127,8 @@ int main(int argc, char *argv[])
     autoPtr<caseLock> bedLock;
     if (!bedDir.empty() && bedDir != caseDir && !bedDir.starts_with(caseDir + "/"))
     {
-        bedLock.reset(new caseLock(bedDir, args.executable()));
+        // optional: a directory that takes no file is packBed's to name
+        bedLock.reset(new caseLock(bedDir, args.executable(), true));
     }
     const bool packed = particles.packBed(output, args.found("overwrite"));
     particles.report(Info);

@@ -55,7 +55,12 @@ Foam::string Foam::caseLock::holder() const
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::caseLock::caseLock(const fileName& dir, const word& application)
+Foam::caseLock::caseLock
+(
+    const fileName& dir,
+    const word& application,
+    const bool optional
+)
 :
     file_(dir/lockFileName),
     fd_(inheritedDescriptor())
@@ -65,6 +70,10 @@ Foam::caseLock::caseLock(const fileName& dir, const word& application)
         // Read-only: a file open for writing would keep its file system
         // from being remounted read-only (flock needs no write access)
         fd_ = ::open(file_.c_str(), O_RDONLY | O_CREAT | O_CLOEXEC, 0644);
+    }
+    if (fd_ < 0 && optional)
+    {
+        return;
     }
     if (fd_ < 0)
     {
