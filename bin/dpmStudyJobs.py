@@ -1,9 +1,10 @@
 """The local runner of bin/dpmStudy: each bed or case a child process group
 (Job), run a few at once with progress lines (run_here), skipping a
-directory another process works in (running_in); and the restart
-housekeeping: logs rotated, time directories without a complete restart
-state set aside (latest_complete_time)."""
+directory another process works in (running_in, the directory's lock); and
+the restart housekeeping: logs rotated, time directories without a complete
+restart state set aside (latest_complete_time)."""
 
+import fcntl
 import os
 import re
 import signal
@@ -50,9 +51,58 @@ def rotate_log(path):
         os.rename(path, "%s.%d" % (path, n))
 
 
+# The lock of a case or bed (src/dpmCoupling/caseLock): flock on this file,
+# its first line naming the holder
+LOCK_FILE = ".dpmLock"
+LOCK_PID = re.compile(r"\(pid (\d+) ")
+
+
+def lock_holder(directory):
+    """The holder's line of directory's lock if another process holds it,
+    else None. Looks without taking it (a shared lock for an instant)."""
+    try:
+        fd = os.open(os.path.join(directory, LOCK_FILE), os.O_RDONLY | os.O_CLOEXEC)
+    except OSError:
+        return None
+    try:
+        try:
+            fcntl.flock(fd, fcntl.LOCK_SH | fcntl.LOCK_NB)
+        except BlockingIOError:
+            line = os.pread(fd, 512, 0).decode(errors="replace").split("\n")[0]
+            return line or "a process starting up"
+        fcntl.flock(fd, fcntl.LOCK_UN)
+        return None
+    finally:
+        os.close(fd)
+
+
+def take_lock(directory):
+    """directory's lock for this process (a descriptor), or None when
+    another process holds it. A child given the descriptor
+    (DPMFOAM2D_LOCK_FD) holds it on after this process closes its copy."""
+    path = os.path.join(directory, LOCK_FILE)
+    # read-only: no file open for writing (a remount read-only would fail)
+    fd = os.open(path, os.O_RDONLY | os.O_CREAT | os.O_CLOEXEC, 0o644)
+    for attempt in range(10):       # a look by lock_holder holds it an instant
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            break
+        except BlockingIOError:
+            time.sleep(0.02)
+    else:
+        os.close(fd)
+        return None
+    line = "dpmStudy (pid %d on %s, started %s)\n" % (
+        os.getpid(), os.uname().nodename, time.strftime("%Y-%m-%d %H:%M:%S UTC", time.gmtime()))
+    with open(path, "w") as f:      # the lock stays with fd
+        f.write(line)
+    return fd
+
+
 def running_in(directory):
     """PID of a solver, mesher or packer working in directory (started by
-    another dpmStudy or by hand), or None. Two runs of one case would
+    another dpmStudy or by hand, here or, through the lock, on another host
+    sharing the file system), or None. Two runs of one case would
     overwrite each other's time directories."""
     target = os.path.realpath(directory)
     for pid in filter(str.isdigit, os.listdir("/proc")):
@@ -64,6 +114,26 @@ def running_in(directory):
                 return int(pid)
         except OSError:         # gone, or not ours to look at
             continue
+    holder = lock_holder(directory)
+    if holder:
+        m = LOCK_PID.search(holder)
+        return int(m.group(1)) if m else -1
+    return None
+
+
+# Characters OpenFOAM's file names do not allow (fileName::valid)
+BAD_PATH_CHARACTERS = {" ": "a space", "\t": "a tab", "\n": "a newline", "\r": "a return",
+                       "\v": "a vertical tab", "\f": "a form feed",
+                       '"': "a double quote", "'": "a single quote"}
+
+
+def path_problem(what, path):
+    """Why OpenFOAM would refuse path as a file name, as a message, or None."""
+    for i, ch in enumerate(path):
+        if ch in BAD_PATH_CHARACTERS:
+            return ("%s %r has %s (character %d); OpenFOAM's file names allow no white "
+                    "space (spaces, tabs, newlines) and no quotes (' \"): use a path "
+                    "without them" % (what, path, BAD_PATH_CHARACTERS[ch], i + 1))
     return None
 
 
@@ -71,29 +141,44 @@ class Job:
     """One step of the study run as a child process group: a bed to pack or
     a case to run (its steps chained in one shell command)."""
 
-    def __init__(self, name, directory, command, log, after=None):
+    def __init__(self, name, directory, command, log, after=None, finished=None):
         self.name, self.dir, self.command, self.log = name, directory, command, log
         self.after = after          # a Job that must succeed first
+        self.finished = finished    # is its result on disk (after exit 0)?
         self.proc = None
         self.state = "waiting"      # waiting, running, done, failed
         self.started = None
 
     def start(self, env=None):
+        """Start it holding its directory's lock, handed to the child (the
+        solver or packer takes it over); False if another process holds it."""
+        lock = take_lock(self.dir)
+        if lock is None:
+            return False
         rotate_log(os.path.join(self.dir, self.log))
         out = open(os.path.join(self.dir, self.log), "w")
+        env = dict(os.environ if env is None else env, DPMFOAM2D_LOCK_FD=str(lock))
         self.proc = subprocess.Popen(["bash", "-c", self.command], cwd=self.dir,
                                      stdout=out, stderr=subprocess.STDOUT, env=env,
+                                     pass_fds=(lock,),
                                      # a group of its own to stop it whole, but the
                                      # same session: a new session would start a new
                                      # scheduler autogroup, and `nice dpmStudy` would
                                      # not lower the solvers against other sessions
                                      process_group=0)
         out.close()
+        os.close(lock)      # the child's copy holds it until the child ends
         self.state, self.started = "running", time.time()
+        return True
 
     def poll(self):
         if self.state == "running" and self.proc.poll() is not None:
-            self.state = "done" if self.proc.returncode == 0 else "failed"
+            if self.proc.returncode != 0:
+                self.state = "failed"
+            elif self.finished is not None and not self.finished():
+                self.state = "failed (exit 0, but its end time is not on disk)"
+            else:
+                self.state = "done"
         return self.state
 
     def stop(self):
@@ -162,7 +247,10 @@ def run_here(study, jobs):
                 if pid:
                     j.state = "skipped (process %d runs in it)" % pid
                     continue
-                j.start(env)
+                if not j.start(env):
+                    j.state = "skipped (%s holds its lock)" % (lock_holder(j.dir)
+                                                               or "another process")
+                    continue
                 running.append(j)
         busy = any(j.state in ("waiting", "running") for j in jobs)
         if not busy or time.time() - last_report >= study.a.interval:

@@ -232,7 +232,7 @@ def status(study, running_in, latest_complete_time):
                 t += ", ETA " + hours(eta)
             if not finished:
                 left = end - float(running if running else tc or 0)
-                remaining.append((left, running is not None))
+                remaining.append((left, bool(pid) or slurmState == "RUNNING"))
         if pid:
             state, job = "running", "local pid %d" % pid
         elif slurmState in ACTIVE:

@@ -98,6 +98,25 @@ class Variant:
             return True
         return False
 
+    def scaled(self, scale):
+        """caseSettings particleScale for -scale: a fraction of the counts
+        the cases would have, this variant's own particleScale included
+        (said in one line); scale itself if the variant sets none."""
+        own = [e for e in self.edits
+               if os.path.normpath(e[1]) == "constant/caseSettings" and e[2] == "particleScale"]
+        if scale is None or not own:
+            return scale
+        n, f, entry, value = own[-1]
+        try:
+            factor = float(value)
+        except ValueError:
+            sys.exit("dpmStudy: %s line %d: particleScale %s is not a number"
+                     % (self.path, n, value))
+        print("dpmStudy: -scale %g with variant %s's particleScale %g (%s line %d): the cases "
+              "get particleScale %g (-scale is a fraction of the variant's counts)"
+              % (scale, self.name, factor, self.path, n, scale * factor), flush=True)
+        return scale * factor
+
     def apply(self, case):
         # caseSettings first: foamDictionary writes the other files with the
         # values they include from it expanded, as they are at that moment

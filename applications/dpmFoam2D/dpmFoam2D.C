@@ -21,6 +21,10 @@ Description
     its own, with their voidage and reaction of the step before. See
     docs/model.md.
 
+    One run a case: the run locks it (caseLock), a second is refused naming
+    the first; -postProcess takes no lock. The end time is written whatever
+    the write intervals, so a finished run ends with its state on disk.
+
 Usage
     dpmFoam2D [-cloud name] [-postProcess [-func name]]
 
@@ -33,12 +37,25 @@ Usage
 #include "dpmCloud.H"
 #include "solverTimers.H"
 #include "caseChecks.H"
+#include "caseLock.H"
 #include "incompleteTimes.H"
 #include "writeFailureReason.H"
 #include "fixedValueFvPatchFields.H"
 #include "staticReconstruction.H"
 
 #define PIMPLE_CONTROL
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+//- The step that ends the run (Time::run's test), unless told to stop
+//  without writing
+static bool lastStep(const Foam::Time& runTime)
+{
+    return
+        runTime.value()
+     >= runTime.endTime().value() - 0.5*runTime.deltaTValue()
+     && runTime.stopAt() != Foam::Time::stopAtControls::saNoWriteNow;
+}
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -56,11 +73,13 @@ int main(int argc, char *argv[])
         "Name of the particle cloud (default 'particles')"
     );
 
+    caseChecks::caseNameCharacters(argc, argv);
     #include "postProcess.H"
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     caseChecks::serialRun(args.executable());    // threads, not MPI
+    const caseLock lock(args.path(), args.executable());  // one run a case
     #include "setAsideIncompleteTimes.H"
     #include "createTime.H"
     Sout.precision(8);      // a readable log; fields keep writePrecision
@@ -148,7 +167,17 @@ int main(int argc, char *argv[])
         }
 
         timers.start();
-        particles.writeParticlesIfDue();
+        // The end time is saved whatever the write intervals: a finished
+        // run leaves its last state to continue from or to look at
+        const bool endTimeStep = lastStep(runTime);
+        if (endTimeStep)
+        {
+            particles.writeParticles();
+        }
+        else
+        {
+            particles.writeParticlesIfDue();
+        }
         if (runTime.writeTime())
         {
             particles.reportBalance(Info);

@@ -144,7 +144,13 @@ cp study/results/summary.csv summary.before
 exec 8>study/results/.lock && flock 8 || fail "flock"
 dpmStudy study -results -noPictures -mean 0.05 > log.results1 2>&1 & first=$!
 dpmStudy study -results -noPictures -mean 0.05 > log.results2 2>&1 & second=$!
-sleep 2; flock -u 8; exec 8>&-
+# released once both wait (or after 60 s), however slowly they start
+for i in $(seq 1 300)
+do
+    [ "$(cat log.results1 log.results2 | grep -c "^results: waiting for another dpmStudy")" = 2 ] && break
+    sleep 0.2
+done
+flock -u 8; exec 8>&-
 wait $first || { cat log.results1; fail "the first of two -results failed"; }
 wait $second || { cat log.results2; fail "the second of two -results failed"; }
 [ $(cat log.results1 log.results2 | grep -c "^results: waiting for another dpmStudy") = 2 ] \

@@ -51,11 +51,27 @@ Usage
     The path is checked before the packing (a directory, a parent that is a
     file, no permission: an error at once, nothing written).
 
+    Like dpmFoam2D it locks the case (caseLock), and the bed's directory
+    when that lies outside the case: a second packer or a solver there is
+    refused at once, naming the holder.
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "gasProperties.H"
 #include "dpmCloud.H"
+#include "caseChecks.H"
+#include "caseLock.H"
+
+#include <climits>
+#include <cstdlib>
+
+//- The directory's absolute path with links resolved ("" if it is missing)
+static Foam::fileName resolved(const Foam::fileName& dir)
+{
+    char buffer[PATH_MAX];
+    return ::realpath(dir.c_str(), buffer) ? Foam::fileName(buffer) : "";
+}
 
 int main(int argc, char *argv[])
 {
@@ -79,7 +95,9 @@ int main(int argc, char *argv[])
         " settings (else it is kept if made for these, refused otherwise)"
     );
 
+    Foam::caseChecks::caseNameCharacters(argc, argv);
     #include "setRootCase.H"
+    const caseLock lock(args.path(), args.executable());
     #include "createTime.H"
     Sout.precision(8);
     #include "createMesh.H"
@@ -104,6 +122,14 @@ int main(int argc, char *argv[])
             "file", runTime.constant()/"packedBed.state"
         ).expand()
     );
+    const fileName caseDir = resolved(args.path());
+    const fileName bedDir = resolved(output.path());
+    autoPtr<caseLock> bedLock;
+    if (!bedDir.empty() && bedDir != caseDir && !bedDir.starts_with(caseDir + "/"))
+    {
+        // optional: a directory that takes no file is packBed's to name
+        bedLock.reset(new caseLock(bedDir, args.executable(), true));
+    }
     const bool packed = particles.packBed(output, args.found("overwrite"));
     particles.report(Info);
     particles.writeParticles();

@@ -29,9 +29,9 @@ Description
 Usage
     dpmUmf [-voidage '(0.4 0.45 0.5)']
 
-    -voidage <list>  voidages of the bed, each in (0, 1) (default (0.4 0.45
-                     0.5): the emulsion of the paper's beds is 0.43-0.49 in
-                     dpmBedStatistics)
+    -voidage <list>  voidages of the bed, one or more, each in (0, 1)
+                     (default (0.4 0.45 0.5): the emulsion of the paper's
+                     beds is 0.43-0.49 in dpmBedStatistics)
 
 \*---------------------------------------------------------------------------*/
 
@@ -63,6 +63,13 @@ int main(int argc, char *argv[])
 
     scalarList voidages({0.4, 0.45, 0.5});
     args.readListIfPresent<scalar>("voidage", voidages);
+    if (voidages.empty())
+    {
+        FatalErrorInFunction
+            << "Option -voidage: the list is empty; allowed: one or more"
+            << " voidages, each in (0, 1), e.g. -voidage '(0.4 0.45 0.5)'"
+            << exit(FatalError);
+    }
     for (const scalar eps : voidages)
     {
         if (!(eps > 0 && eps < 1))

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <thread>
 #include <sched.h>
+#include <unistd.h>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -199,6 +200,45 @@ void Foam::caseChecks::serialRun(const word& application)
             << " processes. Run it as '" << application << "' alone, without"
             << " mpirun and -parallel (decomposePar is not needed)"
             << exit(FatalError);
+    }
+}
+
+
+void Foam::caseChecks::caseNameCharacters(int argc, char* argv[])
+{
+    std::string path;
+    if (char* cwd = ::getcwd(nullptr, 0))
+    {
+        path = cwd;
+        std::free(cwd);
+    }
+    for (int i = 1; i + 1 < argc; ++i)
+    {
+        if (std::string(argv[i]) == "-case")
+        {
+            const std::string dir(argv[i + 1]);
+            path = (!dir.empty() && dir[0] == '/') ? dir : path + "/" + dir;
+        }
+    }
+    for (size_t i = 0; i < path.size(); ++i)
+    {
+        if (!fileName::valid(path[i]))
+        {
+            const char c = path[i];
+            const std::string what =
+                c == ' ' ? "a space" : c == '\t' ? "a tab"
+              : c == '\n' ? "a newline" : c == '"' ? "a double quote"
+              : c == '\'' ? "a single quote" : "a white-space character";
+            std::string application(argv[0]);
+            application.erase(0, application.rfind('/') + 1);
+            FatalErrorInFunction
+                << application.c_str() << ": the case path \"" << path.c_str()
+                << "\" has " << what.c_str() << " (character " << label(i + 1)
+                << "); OpenFOAM's file names allow no white space (spaces,"
+                << " tabs, newlines) and no quotes (' \"): rename the"
+                << " directory or move the case to a path without them"
+                << exit(FatalError);
+        }
     }
 }
 

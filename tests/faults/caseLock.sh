@@ -1,0 +1,60 @@
+#!/bin/bash
+# One run a case (src/dpmCoupling/caseLock): while a solver runs in a case,
+# a second dpmFoam2D and a dpmPackBed there are refused at once (exit 1,
+# within 10 s) with one line naming the holder's pid, host and start and
+# the lock file, leaving the case as it was; -postProcess needs no lock;
+# a holder killed by SIGKILL leaves no stale lock: the next start continues
+# from its last complete time.
+. "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
+. "$testsDir/solver/testFunctions"
+
+cd "$workDir" || fail "cd"
+makeCase case
+cd case || fail "cd case"
+setEntry system/controlDict endTime 5          # runs until killed
+dpmFoam2D > log.holder 2>&1 &
+holder=$!
+trap 'kill -9 $holder 2>/dev/null' EXIT
+for i in $(seq 1 300)
+do
+    grep -q "pid $holder " .dpmLock 2>/dev/null && [ -d 0.01 ] && break
+    kill -0 $holder 2>/dev/null || { tail -20 log.holder; fail "the first solver ended"; }
+    sleep 0.2
+done
+grep -q "pid $holder " .dpmLock || fail "the first solver wrote no holder line into .dpmLock"
+holderLine="in use by dpmFoam2D \(pid $holder on $(hostname), started [0-9-]+ [0-9:]+ UTC\), which holds the lock \"$PWD/.dpmLock\""
+
+refused()
+{
+    local app="$1"; shift
+    local start=$SECONDS
+    timeout 30 "$app" "$@" > log.$app 2>&1
+    local status=$?
+    [ "$status" = 1 ] || { tail -5 log.$app; fail "a second $app in a running case: exit $status, not 1"; }
+    [ $((SECONDS - start)) -le 10 ] || fail "the second $app took $((SECONDS - start)) s to be refused"
+    grep -qE "^$app: the directory \"$PWD\" is $holderLine" log.$app \
+        || { cat log.$app; fail "$app: no message naming the holder and the lock"; }
+    echo "ok   $app refused: $(grep -m1 "is in use" log.$app)"
+}
+cp -r system system.before
+refused dpmFoam2D
+refused dpmPackBed
+diff -r system system.before > /dev/null || fail "a refused run changed system/"
+ls constant/packedBed.state >/dev/null 2>&1 && fail "a refused dpmPackBed wrote a bed"
+dpmFoam2D -postProcess -func writeCellCentres -latestTime > log.postProcess 2>&1 \
+    || { tail -10 log.postProcess; fail "-postProcess refused while a run holds the case"; }
+echo "ok   -postProcess runs beside the solver"
+
+kill -9 $holder
+wait $holder 2>/dev/null
+trap - EXIT
+latest=$(foamListTimes -latestTime 2>/dev/null | tail -1)
+[ -n "$latest" ] || fail "no time written before the kill"
+next=$(py -c "print(round($latest + 0.01, 6))")
+setEntry system/controlDict endTime "$next"
+runSolver
+grep -q "read from .*/uniform/dem.state" log.dpmFoam2D || fail "the run after the kill did not restart"
+[ -f "$next/uniform/dem.state" ] || fail "the run after the kill did not reach $next"
+grep -q "pid [0-9]* " .dpmLock || fail "no holder line after the restart"
+echo "ok   after kill -9 of the holder the next run started (restarted from $latest, ended at $next)"
+pass "a second solver or packer in a running case is refused naming the holder; kill -9 leaves no stale lock"
