@@ -1,4 +1,4 @@
-// Speed of the slab mode's DEM as the solver sees it (issue 17): BM_SlabBed's slab (1500
+// Speed of the slab mode's DEM as the solver sees it: BM_SlabBed's slab (1500
 // small and 500 large spheres, 0.05 m x 15 mm) fluidized by BM_FluidizedBed's forcing
 // (demBench::setGas, H = 0.06 m, four times the settled bed's height), so contacts open and
 // close, the list is rebuilt every few steps and the particles are renumbered by cell every

@@ -1,4 +1,4 @@
-// Speed of the slab mode's DEM (issue 17): a settled binary bed of 1500 small and 500 large
+// Speed of the slab mode's DEM: a settled binary bed of 1500 small and 500 large
 // spheres in a slab 0.05 m wide and 15 mm deep (Goldschmidt's depth, 6 large diameters),
 // dt = 1e-5 s, at rest, 1 and 2 threads: particle-steps per second, to set beside
 // BM_SettledBed's discs. The bed is packed and settled once and cached in

@@ -27,7 +27,7 @@ PairGeometry geometry(double overlap, double vn, double vt, double xi)
 
 TEST(ContactKernel, NormalForceIsSpringPlusDashpotAlongMinusNormal)
 {
-    // F_n on i = -(kn delta + etaN vn) nHat (model.md section 3), by hand: 800*1e-5 + 0.01*0.1.
+    // F_n on i = -(kn delta + etaN vn) nHat (docs/theory/paper-model.md, "Particles"), by hand: 800*1e-5 + 0.01*0.1.
     const auto f = dem::contactForce(geometry(1e-5, 0.1, 0.0, 0.0), law(), 1e-5);
     EXPECT_DOUBLE_EQ(f.force.x(), -(800.0 * 1e-5 + 0.01 * 0.1));
     EXPECT_DOUBLE_EQ(f.force.y(), 0.0);

@@ -1,5 +1,5 @@
 #pragma once
-// Shared set-up of the DEM tests: the paper's particles (model.md section 1).
+// Shared set-up of the DEM tests: the paper's particles (docs/theory/paper-model.md, "The case").
 
 #include "dem/Facade.hpp"
 

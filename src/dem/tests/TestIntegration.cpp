@@ -109,7 +109,7 @@ double energyDrift(double dt)
 
 TEST(Integration, ElasticFrictionlessBoxConservesEnergy)
 {
-    // e = 1, mu = 0: energy conserved to 1e-3 over 1e5 steps (issue 3) at dt = 2.5e-6 s, i.e.
+    // e = 1, mu = 0: energy conserved to 1e-3 over 1e5 steps at dt = 2.5e-6 s, i.e.
     // 66 steps per small-small contact. Velocity Verlet conserves a shadow energy; what
     // drifts is the error made where a contact switches on or off between steps, O(dt^2)
     // per collision with a random sign. At the paper's dt = 1e-5 s (16.6 steps per contact)

@@ -1,4 +1,4 @@
-// Oblique impact of a sphere on a wall with friction (issue 3). Sliding throughout the
+// Oblique impact of a sphere on a wall with friction. Sliding throughout the
 // contact: the tangential impulse is mu times the normal one, m (1 + e) v_n, so
 //   v_t' = v_t - mu (1 + e) v_n,   |omega'| = 2.5 mu (1 + e) v_n / R   (I = 0.4 m R^2),
 // which holds while v_t / v_n > 3.5 mu (1 + e) (Maw, Barber & Fawcett 1976; Walton 1993).

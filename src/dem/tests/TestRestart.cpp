@@ -1,5 +1,5 @@
 // Save -> load -> continue equals an uninterrupted run, and 1 thread equals 2 threads,
-// bit for bit (issue 3).
+// bit for bit.
 
 #include "TestHelpers.hpp"
 

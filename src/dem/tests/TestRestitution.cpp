@@ -1,4 +1,4 @@
-// Head-on restitution and contact duration (issue 3; model.md section 3), and the bouncing
+// Head-on restitution and contact duration (docs/theory/paper-model.md, "Particles"), and the bouncing
 // ball. Expected values: e = 0.97 is the input the damping is built from, and it is exact
 // for the linear spring-dashpot in continuous time; t_c from the formula in TestHelpers.
 
@@ -78,7 +78,7 @@ const Case cases[] = {{"small-small", 0, 0}, {"small-large", 0, 1}, {"large-larg
 
 TEST(Restitution, HeadOnConvergesToInputAtTcOver50)
 {
-    // Issue 3: e within 0.2 % and t_c within 1 % at dt = t_c/50.
+    // Tolerances: e within 0.2 % and t_c within 1 % at dt = t_c/50.
     for (const Case& c : cases) {
         const double tc = contactTime(effectiveMass(c.a, c.b), 800.0, 0.97);
         const Collision got = headOn(c.a, c.b, tc / 50.0);
@@ -108,7 +108,7 @@ TEST(Restitution, BouncingBallHeightsFallAsESquared)
 {
     // A small particle dropped on the floor without friction: between bounces the flight is
     // ballistic, so the apex is y + vy^2/(2g) measured anywhere in flight, and
-    // (h_k - r) = (h0 - r) e^(2k) (issue 3), within 0.5 %.
+    // (h_k - r) = (h0 - r) e^(2k), within 0.5 %.
     const double tc = contactTime(sphereMass(dSmall), 800.0, 0.97);
     Settings s = paperSettings({0.0, 0.02, 0.0, 0.1}, tc / 50.0);
     s.gravity[1] = -9.81;

@@ -1,4 +1,4 @@
-// Every bad setting of issue 3 stops with a dem::Error naming the setting, its value and
+// Every bad setting stops with a dem::Error naming the setting, its value and
 // the allowed range.
 
 #include "TestHelpers.hpp"

@@ -73,7 +73,7 @@ TEST(SettledBed, PaperBedSettlesDenseAndAtRest)
     // small particle by 1 % of its diameter, 0.01 m g 0.01 d = 6.6e-12 J.
     EXPECT_LT(kePerParticle, 0.01 * sphereMass(dSmall) * g * 0.01 * dSmall);
 
-    // Overlaps. Issue 3 asks for none above 1 % of d_small. With kn = 800 N/m that holds
+    // Overlaps: none above 1 % of d_small is the aim. With kn = 800 N/m that holds
     // on average, not for the largest: the floor carries most of the bed's weight (0.58 N)
     // on ~80 contacts, i.e. ~7e-3 N or 0.6 % of d_small each, and force chains carry
     // several times the mean contact force (exponential tail of the force distribution,
@@ -89,7 +89,7 @@ TEST(SettledBed, PaperBedSettlesDenseAndAtRest)
 
     // Packing fraction against 2D random close packing of bidisperse discs, 0.82-0.84
     // (O'Hern et al. 2003, PRE 68 011306); the paper's settled bed is "about 0.15 m"
-    // (model.md section 1), which is phi = 0.83 for these particles.
+    // (docs/theory/paper-model.md, "The case"), which is phi = 0.83 for these particles.
     EXPECT_GT(phi, 0.78);
     EXPECT_LT(phi, 0.87);
     EXPECT_NEAR(height, 0.15, 0.01);

@@ -1,4 +1,4 @@
-// The slab mode's beds (issue 17): NBS equals brute force with the front and back walls,
+// The slab mode's beds: NBS equals brute force with the front and back walls,
 // a settled slab carries its weight on the floor, save/load and 1 vs 2 threads bit for bit,
 // and the mode's settings.
 

@@ -1,4 +1,4 @@
-// The facade dem::Simulation in the slab mode (issue 17): it drives the slab engine bit for
+// The facade dem::Simulation in the slab mode: it drives the slab engine bit for
 // bit, restarts and runs on 2 threads bit for bit, exposes the 3D coupling arrays, and keeps
 // the 2D and 3D members apart.
 

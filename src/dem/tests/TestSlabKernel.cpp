@@ -1,4 +1,4 @@
-// The slab mode's contact kernel (issue 17): head-on restitution of every pair and of the
+// The slab mode's contact kernel: head-on restitution of every pair and of the
 // walls along directions not aligned with the axes, an oblique impact on a tilted wall
 // against the rigid-body impulse result, and energy conservation with e = 1, mu = 0.
 // Expected numbers as in TestRestitution and TestObliqueImpact (Maw, Barber & Fawcett 1976;
@@ -112,7 +112,7 @@ Collision headOn(int a, int b, int wall, const Vec3& u, double dt)
 
 TEST(SlabKernel, HeadOnRestitutionOfEveryPairAndWallAtTcOver50)
 {
-    // Issue 17 (as issue 3 in 2D): e within 0.2 % and t_c within 1 % at dt = t_c/50.
+    // As in 2D: e within 0.2 % and t_c within 1 % at dt = t_c/50.
     const Vec3 u = Vec3(1.0, -2.0, 2.0).normalized();   // along no axis
     const struct {
         const char* name;

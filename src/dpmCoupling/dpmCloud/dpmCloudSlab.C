@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-    dpmCloud in the slab mode (voidageModel slab3D, issue 17): 3D spheres
+    dpmCloud in the slab mode (voidageModel slab3D): 3D spheres
     between a front wall z = 0 and a back wall z = depth, the mesh's
     thickness, in a gas one cell thick. The gas has no z component: the
     spheres see u_z = 0 (the drag damps vz), their buoyancy and pressure-

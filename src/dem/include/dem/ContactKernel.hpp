@@ -103,7 +103,7 @@ rollingTorque(const PairGeometryT<Dim>& g, double fn, const ContactLaw& law)
     }
 }
 
-/// Linear spring-dashpot with Coulomb friction (model.md section 3).
+/// Linear spring-dashpot with Coulomb friction (docs/theory/paper-model.md, "Particles").
 ///
 /// The tangential spring lives in the tangent plane of the contact. In 3D the stored
 /// displacement is first turned into the current tangent plane (its component along nHat

@@ -20,7 +20,7 @@ struct ContactLaw {
 };
 
 /// Normal damping that gives restitution e for a head-on collision of effective mass mEff:
-/// etaN = 2 sqrt(mEff kn) |ln e| / sqrt(pi^2 + ln^2 e)  (model.md section 3).
+/// etaN = 2 sqrt(mEff kn) |ln e| / sqrt(pi^2 + ln^2 e)  (docs/theory/paper-model.md, "Particles").
 double dampingFromRestitution(double mEff, double kn, double e);
 
 /// Law for a contact of effective mass mEff (m_i m_j/(m_i + m_j), or m_i for a wall).
