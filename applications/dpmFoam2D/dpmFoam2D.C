@@ -33,6 +33,7 @@ Usage
 #include "dpmCloud.H"
 #include "solverTimers.H"
 #include "caseChecks.H"
+#include "dictionaryScan.H"
 #include "incompleteTimes.H"
 #include "writeFailureReason.H"
 #include "fixedValueFvPatchFields.H"
@@ -61,6 +62,7 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     caseChecks::serialRun(args.executable());    // threads, not MPI
+    caseChecks::dictionaryFiles(args.path());    // before OpenFOAM parses them
     #include "setAsideIncompleteTimes.H"
     #include "createTime.H"
     Sout.precision(8);      // a readable log; fields keep writePrecision

@@ -56,6 +56,7 @@ Usage
 #include "fvCFD.H"
 #include "gasProperties.H"
 #include "dpmCloud.H"
+#include "dictionaryScan.H"
 
 int main(int argc, char *argv[])
 {
@@ -80,6 +81,7 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+    caseChecks::dictionaryFiles(args.path());    // before OpenFOAM parses them
     #include "createTime.H"
     Sout.precision(8);
     #include "createMesh.H"
