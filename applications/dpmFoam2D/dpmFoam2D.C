@@ -81,7 +81,7 @@ int main(int argc, char *argv[])
     }
     if (!isFile(runTime.path()/"particles"/runTime.timeName() + ".h5"))
     {
-        particles.writeParticlesIfDue();
+        particles.writeStartParticles(U);
     }
 
     solverTimers timers(runTime);
