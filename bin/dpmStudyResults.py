@@ -124,7 +124,7 @@ def case_row(c, X, rate_window):
                for win in time_windows(t, M["M"], tS, S, X)]
     for name in sorted(f for f in os.listdir(case) if f.startswith("log.dpmFoam2D")):
         with open(os.path.join(case, name), errors="replace") as f:
-            m = re.search(r"Umf \(Wen-Yu\) (\S+) m/s, U0/Umf \S+, U0 (\S+) m/s", f.read())
+            m = re.search(r"Umf \(Wen-Yu\) (\S+) m/s, U0/Umf \S+, (?:U0 - Umf \S+ m/s, )?U0 (\S+) m/s", f.read())
         if m:
             row["Umf"], row["U0"] = float(m.group(1)), float(m.group(2))
             break
