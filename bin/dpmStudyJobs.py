@@ -24,9 +24,13 @@ def say(*args):
 
 
 def complete(case, name):
+    """The solver's rule (restart/incompleteTimes.C): U, p_rgh and the
+    particle state, and the concurrent schedule's reaction whole or absent."""
     d = os.path.join(case, name)
-    return all(os.path.isfile(os.path.join(d, f))
-               for f in ("U", "p_rgh", os.path.join("uniform", "dem.state")))
+    exchange = [os.path.isfile(os.path.join(d, f)) for f in ("Kc", "Fp", "Ustar")]
+    return (all(os.path.isfile(os.path.join(d, f))
+                for f in ("U", "p_rgh", os.path.join("uniform", "dem.state")))
+            and (all(exchange) or not any(exchange)))
 
 
 def latest_complete_time(case, set_aside=False):

@@ -38,6 +38,7 @@ Usage
 #include "solverTimers.H"
 #include "caseChecks.H"
 #include "caseLock.H"
+#include "dictionaryScan.H"
 #include "incompleteTimes.H"
 #include "writeFailureReason.H"
 #include "fixedValueFvPatchFields.H"
@@ -80,6 +81,7 @@ int main(int argc, char *argv[])
     #include "setRootCaseLists.H"
     caseChecks::serialRun(args.executable());    // threads, not MPI
     const caseLock lock(args.path(), args.executable());  // one run a case
+    caseChecks::dictionaryFiles(args.path());    // before OpenFOAM parses them
     #include "setAsideIncompleteTimes.H"
     #include "createTime.H"
     Sout.precision(8);      // a readable log; fields keep writePrecision
@@ -98,7 +100,7 @@ int main(int argc, char *argv[])
     }
     if (!isFile(runTime.path()/"particles"/runTime.timeName() + ".h5"))
     {
-        particles.writeParticlesIfDue();
+        particles.writeStartParticles(U);
     }
 
     solverTimers timers(runTime);

@@ -26,6 +26,7 @@ cd twice || fail "cd"
 setEntry system/controlDict endTime 0.01
 runSolver
 mv log.dpmFoam2D log.dpmFoam2D.1
+rm particles/0.01.h5     # the restart writes its start time's file anew
 setEntry system/controlDict endTime 0.02
 runSolver
 grep -q "read from .*0.01/uniform/dem.state" log.dpmFoam2D || fail "the second run did not restart from 0.01"
@@ -49,6 +50,27 @@ for field in ("U", "p_rgh"):
 sys.exit(0 if ok else 1)
 PY
 cmp -s once/0.02/uniform/dem.state twice/0.02/uniform/dem.state || fail "DEM states differ"
+
+# The start files carry the gas at the particles like every other file:
+# 0.h5 the initial gas (0.orig/U: uniform (0 0 0), exactly), and the
+# restart's 0.01.h5 a voidage in [voidageMin 0.1, 1] whose bed mean is
+# within 0.01 of the uninterrupted run's file (one CFD step apart)
+py - <<'PY' || fail "the start times' particle files lack the gas at the particles"
+import sys, h5py, numpy as np
+with h5py.File("once/particles/0.h5") as a:
+    ok = "voidage" in a and "gasVelocity" in a
+    ok = ok and np.all(a["gasVelocity"][()] == 0) and np.all((a["voidage"][()] >= 0.1) & (a["voidage"][()] <= 1))
+    print(f"0.h5: voidage and gasVelocity {'as the initial gas' if ok else 'MISSING or wrong'}")
+with h5py.File("twice/particles/0.01.h5") as b, h5py.File("once/particles/0.01.h5") as a:
+    fine = "voidage" in b and "gasVelocity" in b
+    if fine:
+        e, u = b["voidage"][()], b["gasVelocity"][()]
+        fine = np.all(np.isfinite(u)) and np.all((e >= 0.1) & (e <= 1)) \
+            and abs(e.mean() - a["voidage"][()].mean()) < 0.01
+        print(f"restart's 0.01.h5: mean voidage {e.mean():.4f} (run through: {a['voidage'][()].mean():.4f})")
+    print(f"restart's 0.01.h5: voidage and gasVelocity {'present' if fine else 'MISSING or wrong'}")
+sys.exit(0 if ok and fine else 1)
+PY
 
 # A time directory without its particle state (a run killed while writing
 # it) is set aside as <time>.incomplete, said in the log, and the run

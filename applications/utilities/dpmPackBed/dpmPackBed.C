@@ -72,6 +72,7 @@ static Foam::fileName resolved(const Foam::fileName& dir)
     char buffer[PATH_MAX];
     return ::realpath(dir.c_str(), buffer) ? Foam::fileName(buffer) : "";
 }
+#include "dictionaryScan.H"
 
 int main(int argc, char *argv[])
 {
@@ -98,6 +99,7 @@ int main(int argc, char *argv[])
     Foam::caseChecks::caseNameCharacters(argc, argv);
     #include "setRootCase.H"
     const caseLock lock(args.path(), args.executable());
+    caseChecks::dictionaryFiles(args.path());    // before OpenFOAM parses them
     #include "createTime.H"
     Sout.precision(8);
     #include "createMesh.H"

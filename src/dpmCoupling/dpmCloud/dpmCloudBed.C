@@ -75,10 +75,49 @@ dem::BedRecipe Foam::dpmCloud::bedRecipe() const
     }
     const scalar filled =
         slab_ ? slabPackHeight(r.countPerClass) : 3*area/width;
+
+    // The region holds at least one of the largest particles: a few
+    // particles fill less than a row, so their default is one diameter
+    label largest = 0;
+    forAll(classNames_, k)
+    {
+        if
+        (
+            dem_->settings().classes[k].diameter
+          > dem_->settings().classes[largest].diameter
+        )
+        {
+            largest = k;
+        }
+    }
+    const scalar dMax = dem_->settings().classes[largest].diameter;
+    const scalar columnHeight = grid_.yMax() - grid_.yMin();
+    if (width < dMax || columnHeight < dMax)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "The column of system/bedGeometry (width " << width
+            << " m, height " << columnHeight << " m) is narrower than a"
+            << " particle of class '" << classNames_[largest] << "' (d = "
+            << dMax << " m, " << dict_.name() << "): make width and height"
+            << " larger (then blockMesh) or the particles smaller"
+            << exit(FatalIOError);
+    }
     const scalar packHeight = bed.lookupOrDefault<scalar>
     (
-        "packHeight", min(filled, grid_.yMax() - grid_.yMin())
+        "packHeight", min(max(filled, dMax), columnHeight)
     );
+    if (packHeight < dMax || packHeight > columnHeight)
+    {
+        FatalIOErrorInFunction(bed)
+            << "Entry 'packHeight' = " << packHeight << " in initialBed of "
+            << dict_.name() << " is outside the allowed range [" << dMax
+            << ", " << columnHeight << "]: the packing region must hold a"
+            << " particle of class '" << classNames_[largest] << "' (d = "
+            << dMax << " m) and fit in the column (height " << columnHeight
+            << " m, system/bedGeometry); set initialBed/packHeight in that"
+            << " range, or leave it out (the default follows the counts)"
+            << exit(FatalIOError);
+    }
     r.region =
         dem::Box
         {

@@ -34,6 +34,44 @@ void Foam::dpmCloud::writeParticles()
 }
 
 
+void Foam::dpmCloud::writeStartParticles(const volVectorField& U)
+{
+    const Time& time = mesh_.time();
+    const scalar t = time.value();
+    const scalar k = std::round(t/writeInterval_);
+    if (mag(t - k*writeInterval_) >= 0.5*time.deltaTValue())
+    {
+        return;
+    }
+
+    // interpolateGas's interpolation, into arrays of the file's own: the
+    // coupling's are left as the first step makes them
+    const label n = size();
+    const scalarField& eps = voidage_.primitiveField();
+    const vectorField& Uc = U.primitiveField();
+    const double* x = dem_->x();
+    const double* y = dem_->y();
+    scalarField voidageP(n);
+    vectorField gasVelocityP(n);
+    for (label i = 0; i < n; ++i)
+    {
+        label cells[4];
+        scalar w[4];
+        grid_.interpolationStencil(x[i], y[i], cells, w);
+        scalar e = 0;
+        vector u = Zero;
+        for (int c = 0; c < 4; ++c)
+        {
+            e += w[c]*eps[cells[c]];
+            u += w[c]*Uc[cells[c]];
+        }
+        voidageP[i] = e;
+        gasVelocityP[i] = u;
+    }
+    writer_->write(*dem_, voidageP, gasVelocityP, t, time.timeName());
+}
+
+
 void Foam::dpmCloud::reportBalance(Ostream& os) const
 {
     vector particleForce = Zero;

@@ -4,14 +4,61 @@
 #include "IFstream.H"
 #include "OSspecific.H"
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The missing files of a time, in words: "Ustar, Fp"
+std::string missingText(const Foam::fileName& timeDir)
+{
+    std::string text;
+    for (const Foam::fileName& f : Foam::missingRestartFiles(timeDir))
+    {
+        text += (text.empty() ? "" : ", ") + f;
+    }
+    return text;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+Foam::fileNameList Foam::missingRestartFiles(const fileName& timeDir)
+{
+    fileNameList missing;
+    for (const fileName f : {"U", "p_rgh", "uniform/dem.state"})
+    {
+        if (!isFile(timeDir/f))
+        {
+            missing.append(f);
+        }
+    }
+
+    // The concurrent schedule's reaction: all three or none (a time of a
+    // sequential run); with only some, the next step would start from
+    // another state than the one the time was written in
+    const fileNameList exchange({"Kc", "Fp", "Ustar"});
+    fileNameList absent;
+    for (const fileName& f : exchange)
+    {
+        if (!isFile(timeDir/f))
+        {
+            absent.append(f);
+        }
+    }
+    if (absent.size() && absent.size() < exchange.size())
+    {
+        missing.append(absent);
+    }
+    return missing;
+}
+
 
 bool Foam::completeTime(const fileName& timeDir)
 {
-    return
-        isFile(timeDir/"U")
-     && isFile(timeDir/"p_rgh")
-     && isFile(timeDir/"uniform"/"dem.state");
+    return missingRestartFiles(timeDir).empty();
 }
 
 
@@ -44,9 +91,9 @@ Foam::label Foam::setAsideIncompleteTimes(const argList& args)
                 FatalErrorInFunction
                     << "Start time " << t.name() << " (startTime in "
                     << controlDictFile << ") is incomplete: "
-                    << casePath/t.name() << " has no complete restart state"
-                    << " (U, p_rgh, uniform/dem.state; a run killed while"
-                    << " writing it?)" << nl
+                    << casePath/t.name() << " has no "
+                    << missingText(casePath/t.name()).c_str()
+                    << " (a run killed while writing it, or files lost)" << nl
                     << "    Remove " << casePath/t.name() << " or start from"
                     << " an earlier time (startFrom latestTime continues"
                     << " from the last complete one)" << exit(FatalError);
@@ -68,6 +115,7 @@ Foam::label Foam::setAsideIncompleteTimes(const argList& args)
         {
             break;
         }
+        const std::string missing = missingText(dir);
         fileName aside = dir + ".incomplete";
         for (label k = 2; exists(aside); ++k)
         {
@@ -82,9 +130,9 @@ Foam::label Foam::setAsideIncompleteTimes(const argList& args)
                 << "    Remove " << dir << " and run again"
                 << exit(FatalError);
         }
-        Info<< "Restart: time " << t.name() << " is incomplete (no complete"
-            << " restart state: a run killed while writing it); set aside as "
-            << aside.name() << endl;
+        Info<< "Restart: time " << t.name() << " is incomplete (no "
+            << missing.c_str() << ": a run killed while writing it,"
+            << " or files lost); set aside as " << aside.name() << endl;
         ++nSetAside;
     }
     return nSetAside;
