@@ -2,11 +2,16 @@
 // forces of the last evaluation, the neighbour list in its order with the 3-vector
 // histories, the wall contacts, the reference positions), so a restart continues bit for
 // bit. A file of its own kind: a 2D state and a slab state cannot be mistaken for each other.
-// Since version 2 it holds the recipe of a packed bed, so that a case starting from it
-// checks every entry of how it was made (version 1: the counts per class only), and since
-// version 3 the skin and the step of the last list build (the adaptive skin's state; before,
-// the skin was fixed at 0.1 d_min or Settings::neighbourSkin).
+// It holds the caller's record of the run (its models, runRecord()), the recipe of a packed
+// bed, so that a case starting from it checks every entry of how it was made, the skin and
+// the step of the last list build (the adaptive skin's state), and a checksum (64-bit
+// FNV-1a of every byte before it) ahead of the end marker.
+// Version policy: one current version is written (4). Versions 1-3, written before states
+// carried a checksum, are still read, with a warning (loadWarning()) that their integrity
+// cannot be checked (version 1: counts per class only; before 3 the skin was fixed at
+// 0.1 d_min or Settings::neighbourSkin); any other version is refused.
 
+#include "StateIntegrity.hpp"
 #include "dem/Random.hpp"
 #include "dem/SlabSystem.hpp"
 #include "dem/StateRecord.hpp"
@@ -26,8 +31,9 @@ namespace dem {
 
 namespace {
 
-constexpr char slabMagic[16] = "dpmFoam2D-slab\n";
-constexpr std::uint32_t slabVersion = 3;
+const char (&slabMagic)[16] = slabStateMagic;
+constexpr std::uint32_t slabVersion = 4;
+constexpr std::uint32_t slabVersionNoChecksum = 3;
 constexpr std::uint32_t slabVersionFixedSkin = 2;   // no skin, no step of the last build
 constexpr std::uint32_t slabVersionNoRecipe = 1;
 constexpr double fixedSkinFraction = 0.1;           // of d_min, the skin before version 3
@@ -143,7 +149,9 @@ void SlabSystem::save(const std::string& path) const
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
         if (!out) throw Error("cannot write slab state file '" + tmp + "': " + std::strerror(errno));
+        std::uint64_t hash = fnv1a64(nullptr, 0);
         auto bytes = [&](const void* data, std::size_t n) {
+            hash = fnv1a64(static_cast<const char*>(data), n, hash);
             out.write(static_cast<const char*>(data), static_cast<std::streamsize>(n));
         };
         auto value = [&](auto v) { bytes(&v, sizeof(v)); };
@@ -153,6 +161,7 @@ void SlabSystem::save(const std::string& path) const
         };
         bytes(slabMagic, sizeof(slabMagic));
         value(slabVersion);
+        array(std::vector<char>(runRecord_.begin(), runRecord_.end()));
         array(slabKey(settings_));
         value(static_cast<std::uint8_t>(recipe_.has_value()));
         if (recipe_) {
@@ -178,6 +187,8 @@ void SlabSystem::save(const std::string& path) const
         array(pairs_.i); array(pairs_.j); array(pairs_.law); array(pairs_.xi);
         array(pairs_.groupStart);
         array(wallContacts_.start); array(wallContacts_.wall); array(wallContacts_.xi);
+        const std::uint64_t checksum = hash;
+        value(checksum);
         bytes(slabMagic, sizeof(slabMagic));   // end marker
         out.flush();
         if (!out) {
@@ -193,20 +204,22 @@ void SlabSystem::save(const std::string& path) const
 
 void SlabSystem::load(const std::string& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("cannot open slab state file '" + path + "': " + std::strerror(errno));
+    const std::string file = readStateBytes(path, "slab state file");
+    refuseForeignEngine(file, 3, path);
     auto fail = [&](const std::string& what) {
         throw Error("slab state file '" + path + "' is not a valid slab state: " + what);
     };
+    std::size_t at = 0;
     auto bytes = [&](void* to, std::size_t n) {
-        in.read(static_cast<char*>(to), static_cast<std::streamsize>(n));
-        if (!in) fail("it ends early (truncated?)");
+        if (n > file.size() - at) fail("it ends early (truncated?)");
+        if (n > 0) std::memcpy(to, file.data() + at, n);
+        at += n;
     };
     auto value = [&](auto& v) { bytes(&v, sizeof(v)); };
     auto array = [&](auto& a) {
         std::uint64_t n = 0;
         value(n);
-        if (n > (std::uint64_t(1) << 34)) fail("an array length of " + std::to_string(n));
+        if (n > (file.size() - at) / sizeof(a[0])) fail("an array length of " + std::to_string(n));
         a.resize(n);
         bytes(a.data(), n * sizeof(a[0]));
     };
@@ -219,6 +232,16 @@ void SlabSystem::load(const std::string& path)
         fail("version " + std::to_string(version) + ", expected "
              + std::to_string(slabVersionNoRecipe) + " to " + std::to_string(slabVersion));
     }
+    std::string warning;
+    if (version == slabVersion) {
+        verifyChecksum(file, slabMagic, "slab state file '" + path + "'");
+    } else {
+        warning = "slab state file '" + path + "' is of version " + std::to_string(version)
+                  + ", written before states carried a checksum: read without an integrity "
+                    "check (saving it again writes version " + std::to_string(slabVersion) + ")";
+    }
+    std::vector<char> record;
+    if (version == slabVersion) array(record);
     std::vector<double> key;
     array(key);
     const std::vector<double> here = slabKey(settings_);
@@ -280,6 +303,10 @@ void SlabSystem::load(const std::string& path)
     array(t.pairs_.i); array(t.pairs_.j); array(t.pairs_.law); array(t.pairs_.xi);
     array(t.pairs_.groupStart);
     array(t.wallContacts_.start); array(t.wallContacts_.wall); array(t.wallContacts_.xi);
+    if (version > slabVersionNoChecksum) {
+        std::uint64_t checksum = 0;
+        value(checksum);   // verified above
+    }
     char tail[sizeof(slabMagic)];
     bytes(tail, sizeof(tail));
     if (std::memcmp(tail, slabMagic, sizeof(slabMagic)) != 0) fail("no end marker");
@@ -301,6 +328,11 @@ void SlabSystem::load(const std::string& path)
                                        && t.pairs_.groupStart.back() == static_cast<int>(np)
                                        && t.wallContacts_.start.back() == static_cast<int>(nw)));
     if (!listOk) fail("a bad contact list");
+    checkLoadedParticles({n, t.p_.x.data(), t.p_.y.data(), t.p_.z.data(), t.p_.vx.data(),
+                          t.p_.vy.data(), t.p_.vz.data(), t.p_.radius.data()},
+                         settings_.box, settings_.slabDepth, "slab state file '" + path + "'");
+    t.loadWarning_ = warning;
+    t.runRecord_.assign(record.begin(), record.end());
     t.listValid_ = ready != 0 && sameSkin;
     t.forcesValid_ = ready != 0;
     *this = std::move(t);

@@ -1,11 +1,16 @@
 // Binary state file: everything that the next step reads, so a restarted run continues
 // bit for bit (positions, velocities, forces of the last evaluation, the neighbour list
-// in its order, the contact history, the reference positions of the skin criterion), and
-// since version 4 the recipe of a packed bed (counts, region, seed, settling), so that a
-// case can check that a bed was made for its particles, and since version 5 the step of
-// the last list build (the adaptive skin's clock; the skin itself is the key's last entry).
-// Versions 2-4 are read too (no recipe before 4; a version-2 list is rebuilt).
+// in its order, the contact history, the reference positions of the skin criterion); the
+// caller's record of the run (its models, runRecord()); the recipe of a packed bed (counts,
+// region, seed, settling), so that a case can check that a bed was made for its particles;
+// the step of the last list build (the adaptive skin's clock; the skin itself is the key's
+// last entry); and a checksum (64-bit FNV-1a of every byte before it) ahead of the end marker.
+// Version policy: one current version is written (6). Versions 2-5, written before states
+// carried a checksum, are still read, with a warning (loadWarning()) that their integrity
+// cannot be checked (no recipe before 4, no build step before 5, a version-2 list rebuilt);
+// any other version is refused.
 
+#include "StateIntegrity.hpp"
 #include "dem/StateRecord.hpp"
 #include "dem/System.hpp"
 
@@ -23,10 +28,9 @@ namespace dem {
 
 namespace {
 
-constexpr char magic[16] = "dpmFoam2D-dem\n";
-constexpr std::uint32_t version = 5;
-constexpr std::uint32_t version4 = 4;   // no step of the last build
-constexpr std::uint32_t version3 = 3;   // no recipe
+const char (&magic)[16] = discStateMagic;
+constexpr std::uint32_t version = 6;
+constexpr std::uint32_t version5 = 5;   // no checksum
 constexpr std::uint32_t version2 = 2;   // stored pair forces and a per-particle index; read, list rebuilt
 
 /// Per-pair record of version-2 files, read and dropped.
@@ -50,21 +54,25 @@ public:
     }
     void bytes(const void* data, std::size_t n)
     {
+        hash_ = fnv1a64(static_cast<const char*>(data), n, hash_);
         if (error_ == 0 && n > 0 && std::fwrite(data, 1, n, out_) != n) error_ = errno ? errno : EIO;
     }
+    /// FNV-1a of every byte written so far.
+    std::uint64_t hash() const { return hash_; }
     /// The first OS error (0: none).
     int error() const { return error_; }
 
 private:
     std::FILE* out_;
     int error_ = 0;
+    std::uint64_t hash_ = fnv1a64(nullptr, 0);
 };
 
 std::string reason(int error) { return std::strerror(error); }
 
 class Reader {
 public:
-    Reader(std::ifstream& in, const std::string& path) : in_(in), path_(path) {}
+    Reader(const std::string& bytes, const std::string& path) : bytes_(bytes), path_(path) {}
     template <class T> T value()
     {
         T v;
@@ -74,17 +82,15 @@ public:
     template <class T> void array(std::vector<T>& a)
     {
         const auto n = value<std::uint64_t>();
-        if (n > (std::uint64_t(1) << 34)) fail("an array length of " + std::to_string(n));
+        if (n > (bytes_.size() - at_) / sizeof(T)) fail("an array length of " + std::to_string(n));
         a.resize(n);
         read(reinterpret_cast<char*>(a.data()), n * sizeof(T));
     }
-    std::string text()
+    void read(char* to, std::size_t n)
     {
-        const auto n = value<std::uint64_t>();
-        if (n > 4096) fail("a name of length " + std::to_string(n));
-        std::string s(n, ' ');
-        read(s.data(), n);
-        return s;
+        if (n > bytes_.size() - at_) fail("it ends early (truncated?)");
+        if (n > 0) std::memcpy(to, bytes_.data() + at_, n);
+        at_ += n;
     }
     [[noreturn]] void fail(const std::string& what) const
     {
@@ -92,13 +98,9 @@ public:
     }
 
 private:
-    void read(char* to, std::size_t bytes)
-    {
-        in_.read(to, static_cast<std::streamsize>(bytes));
-        if (!in_) fail("it ends early (truncated?)");
-    }
-    std::ifstream& in_;
+    const std::string& bytes_;
     std::string path_;
+    std::size_t at_ = 0;
 };
 
 } // namespace
@@ -118,6 +120,7 @@ void StateFile::write(const System& s, Writer& w)
 {
     w.bytes(magic, sizeof(magic));
     w.value(version);
+    w.array(std::vector<char>(s.runRecord_.begin(), s.runRecord_.end()));
     // The neighbour skin is last in the key: it only orders the round-off, so a
     // state can be continued with another skin after a fresh list build.
     w.array(settingsKey(s.settings_, s.skin_));
@@ -141,6 +144,8 @@ void StateFile::write(const System& s, Writer& w)
     w.array(pl.i); w.array(pl.j); w.array(pl.law); w.array(pl.xi);
     w.array(pl.groupStart);
     w.array(s.wallContacts_.start); w.array(s.wallContacts_.wall); w.array(s.wallContacts_.xi);
+    const std::uint64_t checksum = w.hash();
+    w.value(checksum);
     w.bytes(magic, sizeof(magic));   // end marker
 }
 
@@ -178,19 +183,28 @@ void StateFile::save(const System& s, const std::string& path)
 
 void StateFile::load(System& s, const std::string& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("cannot open state file '" + path + "': " + reason(errno));
-    Reader r(in, path);
+    const std::string bytes = readStateBytes(path, "state file");
+    refuseForeignEngine(bytes, 2, path);
+    Reader r(bytes, path);
     char head[sizeof(magic)];
-    in.read(head, sizeof(head));
-    if (!in || std::memcmp(head, magic, sizeof(magic)) != 0) r.fail("wrong file type");
+    if (bytes.size() < sizeof(head)) r.fail("wrong file type");
+    r.read(head, sizeof(head));
+    if (std::memcmp(head, magic, sizeof(magic)) != 0) r.fail("wrong file type");
     const auto fileVersion = r.value<std::uint32_t>();
-    if (fileVersion != version && fileVersion != version4 && fileVersion != version3
-        && fileVersion != version2) {
-        r.fail("version " + std::to_string(fileVersion) + ", expected " + std::to_string(version)
-               + ", " + std::to_string(version4) + ", " + std::to_string(version3) + " or "
-               + std::to_string(version2));
+    if (fileVersion < version2 || fileVersion > version) {
+        r.fail("version " + std::to_string(fileVersion) + ", expected " + std::to_string(version2)
+               + " to " + std::to_string(version));
     }
+    std::string warning;
+    if (fileVersion == version) {
+        verifyChecksum(bytes, magic, "state file '" + path + "'");
+    } else {
+        warning = "state file '" + path + "' is of version " + std::to_string(fileVersion)
+                  + ", written before states carried a checksum: read without an integrity "
+                    "check (saving it again writes version " + std::to_string(version) + ")";
+    }
+    std::vector<char> record;
+    if (fileVersion == version) r.array(record);
     std::vector<double> key;
     r.array(key);
     const std::vector<double> here = settingsKey(s.settings_, s.skin_);
@@ -221,7 +235,7 @@ void StateFile::load(System& s, const std::string& path)
     t.stepCount_ = r.value<std::int64_t>();
     t.listBuilds_ = r.value<std::int64_t>();
     // Before version 5 the adaptive skin's clock starts at the load.
-    t.lastBuildStep_ = fileVersion >= 5 ? r.value<std::int64_t>() : t.stepCount_;
+    t.lastBuildStep_ = fileVersion >= version5 ? r.value<std::int64_t>() : t.stepCount_;
     t.listValid_ = r.value<std::uint8_t>() != 0;
     t.forcesValid_ = r.value<std::uint8_t>() != 0;
     t.contactCount_ = static_cast<std::size_t>(r.value<std::uint64_t>());
@@ -250,9 +264,10 @@ void StateFile::load(System& s, const std::string& path)
         }
     }
     r.array(t.wallContacts_.start); r.array(t.wallContacts_.wall); r.array(t.wallContacts_.xi);
+    if (fileVersion == version) r.value<std::uint64_t>();   // the checksum, verified above
     char tail[sizeof(magic)];
-    in.read(tail, sizeof(tail));
-    if (!in || std::memcmp(tail, magic, sizeof(magic)) != 0) r.fail("no end marker");
+    r.read(tail, sizeof(tail));
+    if (std::memcmp(tail, magic, sizeof(magic)) != 0) r.fail("no end marker");
 
     // Consistency of the sizes, so that a damaged file cannot index out of range.
     const std::size_t n = t.p_.size();
@@ -291,6 +306,11 @@ void StateFile::load(System& s, const std::string& path)
         ok = wl.wall[s2] >= 0 && static_cast<std::size_t>(wl.wall[s2]) < t.walls_.size();
     }
     if (!ok) r.fail("inconsistent array sizes or indices");
+    checkLoadedParticles({n, t.p_.x.data(), t.p_.y.data(), nullptr, t.p_.vx.data(), t.p_.vy.data(),
+                          nullptr, t.p_.radius.data()},
+                         t.settings_.box, 0.0, "state file '" + path + "'");
+    t.loadWarning_ = warning;
+    t.runRecord_.assign(record.begin(), record.end());
     if (!sameSkin) t.listValid_ = false;   // candidates of the old skin: build anew
     s = std::move(t);
 }

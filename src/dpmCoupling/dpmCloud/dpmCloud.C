@@ -287,6 +287,7 @@ Foam::dpmCloud::dpmCloud
     // The voidage model's own check first (slab3D: the spheres fit in the
     // slab), in its words rather than the DEM's
     voidageModel_->checkDiameters(dict_, diametersOf(settings));
+    checkDemStep(settings);
     guarded
     (
         "Invalid particle settings",

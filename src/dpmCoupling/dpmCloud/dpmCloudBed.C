@@ -186,8 +186,10 @@ Foam::dpmCloud::bedMatch Foam::dpmCloud::readBed
     {
         if (dem_->loadBed(file, r))
         {
+            warnUncheckedState();
             return bedMatch::made;
         }
+        warnUncheckedState();
         problem =
             std::string
             (
@@ -200,6 +202,10 @@ Foam::dpmCloud::bedMatch Foam::dpmCloud::readBed
           + ": its counts per class match " + dict_.name() + ", its seed,"
             " settleTime and packHeight cannot be checked";
         return bedMatch::unrecorded;
+    }
+    catch (const dem::ForeignStateError& err)
+    {
+        problem = err.what() + std::string(": ") + foreignStateFix(err, false);
     }
     catch (const dem::Error& err)
     {
@@ -219,7 +225,29 @@ void Foam::dpmCloud::initialise(const startMode mode)
     const fileName restart = stateFile(mesh_.time().timeName());
     if (isFile(restart))
     {
-        guarded("Cannot read the particle state", [&]{ dem_->load(restart); });
+        try
+        {
+            dem_->load(restart);
+        }
+        catch (const dem::ForeignStateError& err)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Cannot restart from " << restart << ": " << err.what()
+                << ": " << foreignStateFix(err, true).c_str()
+                << exit(FatalIOError);
+        }
+        catch (const dem::Error& err)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Cannot read the particle state (settings in "
+                << dict_.name() << "):" << nl << "    " << err.what()
+                << exit(FatalIOError);
+        }
+        warnUncheckedState();
+        if (mode == startMode::run && mesh_.time().value() > 0)
+        {
+            checkRestartModels(restart);    // time 0's bed has seen no gas
+        }
         const dictionary& bed = dict_.subDict("initialBed");
         if (mode == startMode::run && dem_->recipe() && !bed.found("positions"))
         {

@@ -109,6 +109,48 @@ void Foam::dpmCloud::checkSettings
 }
 
 
+void Foam::dpmCloud::checkDemStep(const dem::Settings& settings) const
+{
+    // Eq. 7's bound lets a dense bed blow up; the measured bounds are in
+    // t_c, the contact duration of a pair of the lightest class
+    const scalar dt = settings.dt;
+    const scalar tc = dem::pairContactTime(settings);
+    const scalar safe = dem::safeTimeStep(settings);
+    const scalar stable = dem::stableTimeStep(settings);
+    if (dt > stable)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "DEM step 'deltaT' = " << dt << " s in " << dict_.name()
+            << " is above the stable bound " << stable << " s (" << stable/tc
+            << " t_c, t_c = " << tc << " s the contact time of two "
+            << settings.classes[smallestClass(settings)].name.c_str()
+            << " particles): a"
+            << " settling bed does not come to rest and overlaps grow"
+            << " (docs/model.md, \"The DEM step's bound\"; eq. 7's "
+            << dem::timeStepBound(settings) << " s is not safe). Allowed"
+            << " range (0, " << stable << "] s; accurate up to " << safe
+            << " s" << exit(FatalIOError);
+    }
+    if (dt > safe)
+    {
+        WarningInFunction
+            << "DEM step 'deltaT' = " << dt << " s in " << dict_.name()
+            << " is above the safe bound " << safe << " s (t_c/10): stable,"
+            << " but restitution and overlaps of head-on contacts are off by"
+            << " more than 1 % (docs/model.md, \"The DEM step's bound\");"
+            << " a step of at most " << safe << " s is accurate" << endl;
+    }
+}
+
+
+Foam::label Foam::dpmCloud::smallestClass(const dem::Settings& settings)
+{
+    int k = 0;
+    dem::timeStepBound(settings, &k);
+    return label(k);
+}
+
+
 bool Foam::dpmCloud::hasParticleStates() const
 {
     for (const instant& t : Time::findTimes(mesh_.time().path()))

@@ -116,7 +116,9 @@ void Foam::dpmCloud::report(Ostream& os) const
     }
     os
         << "    time steps: CFD " << mesh_.time().deltaTValue() << " s, DEM "
-        << s.dt << " s (" << subSteps() << " sub-steps); eq. 7 bound "
+        << s.dt << " s (" << subSteps() << " sub-steps); safe bound "
+        << dem::safeTimeStep(s) << " s (t_c/10), stable bound "
+        << dem::stableTimeStep(s) << " s, eq. 7 bound "
         << dem_->timeStepBound() << " s" << nl
         << "    particle files every " << writeInterval_ << " s in "
         << mesh_.time().path()/"particles" << endl;
@@ -148,6 +150,7 @@ void Foam::dpmCloud::save(const fileName& file) const
         // Test only: leave what a kill in the middle of the DEM's write
         // leaves, half its temporary file and no state
         const fileName whole = file + ".fault";
+        dem_->setRunRecord(runRecord());
         dem_->save(whole);
         ::truncate(whole.c_str(), ::off_t(fileSize(whole)/2));
         Foam::mv(whole, file + ".tmp");
@@ -156,6 +159,7 @@ void Foam::dpmCloud::save(const fileName& file) const
     // The write's own error (file, OS reason), not the settings' file
     try
     {
+        dem_->setRunRecord(runRecord());
         dem_->save(file);
     }
     catch (const dem::Error& err)

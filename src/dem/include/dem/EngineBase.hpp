@@ -32,9 +32,6 @@ namespace dem {
 /// Checks every setting, throwing dem::Error naming the first bad one.
 void validateSettings(const Settings& settings);
 
-/// Eq. 7 time-step bound (2 pi/5) sqrt(m_min/kn) over the classes, s; smallest class in `cls`.
-double timeStepBound(const Settings& settings, int* smallestClass = nullptr);
-
 /// The DEM steps of dt in one CFD step dtOuter; dem::Error unless a positive whole number
 /// (relative tolerance 1e-9).
 long subStepCount(double dtOuter, double dt);
@@ -101,6 +98,11 @@ public:
     double neighbourSkin() const { return skin_; }
     /// How the particles were made (packBed, or the file they came from); none otherwise.
     const BedRecipe* recipe() const { return recipe_ ? &*recipe_ : nullptr; }
+    /// What the last load() could not check (a state of an older version); empty if none.
+    const std::string& loadWarning() const { return loadWarning_; }
+    /// The caller's record of the run (its models), saved with the state; load() sets the file's.
+    const std::string& runRecord() const { return runRecord_; }
+    void setRunRecord(const std::string& record) { runRecord_ = record; }
 
 protected:
     /// `settings` validated; the skin Settings::neighbourSkin if >= 0, else startFraction
@@ -164,6 +166,8 @@ protected:
     double maxOverlap_ = 0.0;
     double meanWeight_ = 1.0;           // weight of this sub-step's velocity in the CFD-step mean
     std::optional<BedRecipe> recipe_;   // how the particles were made, if packBed made them
+    std::string loadWarning_;           // see loadWarning()
+    std::string runRecord_;             // see runRecord()
 };
 
 } // namespace dem

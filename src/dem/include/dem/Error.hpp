@@ -17,3 +17,19 @@ public:
 std::string formatValue(double value);
 
 } // namespace dem
+
+namespace dem {
+
+/// A state file written by the other engine (a slab state read in 2D, or the reverse).
+class ForeignStateError : public Error {
+public:
+    ForeignStateError(const std::string& what, int fileDimension)
+        : Error(what), fileDimension_(fileDimension) {}
+    /// The engine of the file: 2 (discs in a plane) or 3 (spheres in a slab).
+    int fileDimension() const { return fileDimension_; }
+
+private:
+    int fileDimension_;
+};
+
+} // namespace dem

@@ -94,6 +94,19 @@ std::string bedDifferences(const Settings& settings, const BedRecipe& inFile,
 /// baseline or avx2 chooses. Both give the same bits. Throws dem::Error for a bad DEM_SIMD.
 std::string streamingLoopsInUse();
 
+/// Eq. 7 time-step bound (2 pi/5) sqrt(m_min/kn) over the classes, s; smallest class in `cls`.
+double timeStepBound(const Settings& settings, int* smallestClass = nullptr);
+
+/// Contact duration t_c of the linear spring-dashpot for a pair of the lightest class, with
+/// the particle restitution, s: the shortest contact (a wall's has twice the mass).
+double pairContactTime(const Settings& settings);
+
+/// The DEM step's measured bounds (docs/model.md, "The DEM step's bound"), as fractions of
+/// pairContactTime: below the safe one a head-on pair keeps its restitution within 1 % and
+/// a settling bed comes to rest; above the stable one a settling bed does not.
+double safeTimeStep(const Settings& settings);
+double stableTimeStep(const Settings& settings);
+
 class System;
 class SlabSystem;
 
@@ -214,7 +227,9 @@ public:
     /// missing parent directories; throws dem::Error naming the file and the OS reason.
     void save(const std::string& path) const;
     /// Reads a state written by save(); throws dem::Error naming the file if it is bad or
-    /// was written with other settings.
+    /// was written with other settings: damaged (checksum, truncated, bytes appended), of
+    /// the other engine (ForeignStateError), or with a particle not finite, outside the box
+    /// or nearly on top of another.
     void load(const std::string& path);
     /// Reads a bed saved after packBed() and checks that it was made by `recipe` with these
     /// settings; throws dem::Error naming the file and every entry that differs (class,
@@ -226,6 +241,14 @@ public:
     /// The recipe of the particles (packBed, or the file they were loaded from); none if
     /// they were placed otherwise.
     const BedRecipe* recipe() const;
+    /// What the last load() or loadBed() could not check (a file of an older version,
+    /// without a checksum); empty if none.
+    const std::string& loadWarning() const;
+    /// A text the caller keeps with the state (what the run was made with: its coupling
+    /// models), saved by save(); load() and loadBed() set the file's (empty for files of
+    /// the versions before it: 2D 5, slab 3).
+    const std::string& runRecord() const;
+    void setRunRecord(const std::string& record);
 
 private:
     SlabSystem& slab(const char* what) const;   // throws in 2D, naming `what`

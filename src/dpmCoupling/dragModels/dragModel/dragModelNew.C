@@ -25,6 +25,18 @@ Foam::autoPtr<Foam::dragModel> Foam::dragModel::New
         ) << exit(FatalIOError);
     }
 
+    // Coefficients of another model are not used: said, not ignored silently
+    for (const word& other : dictionaryConstructorTablePtr_->sortedToc())
+    {
+        if (other != modelType && dict.found(other + "Coeffs"))
+        {
+            WarningInFunction
+                << dict.name() << ": " << other << "Coeffs is not used: the"
+                << " dragModel is " << modelType << " (select dragModel "
+                << other << " for it, or remove the entry)" << endl;
+        }
+    }
+
     const dictionary coeffs(dict.subOrEmptyDict(modelType + "Coeffs"));
     autoPtr<dragModel> model(cstrIter()(coeffs, rho, mu));
     checkKnownEntries
