@@ -2,8 +2,8 @@
 # benchmarks/vanWachemValidation/Allrun on tutorials/vanWachemBed (slab),
 # tutorials/vanWachemBed2D (discs) and the bracket 2D:DiFelice, cut to
 # 0.05 s of settling and 0.12 s of gas, then its compare.py on the three
-# runs and on the experiment's digitized curves (../shared/reference/
-# vanWachem2001 beside the repository, or VANWACHEM_REFERENCE; left out with
+# runs and on the experiment's digitized curves (the folder
+# ../shared/reference/vanWachem2001 beside the repository, or VANWACHEM_REFERENCE; left out with
 # compare.py's note when absent). The machinery, not the physics: the
 # experiment's particles (17,562 spheres; 3392 discs, README.md of the 2D
 # tutorial), U0 0.9 m/s (the experiment's), the probe every CFD step

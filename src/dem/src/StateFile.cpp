@@ -257,7 +257,7 @@ void StateFile::load(System& s, const std::string& path)
     } else {
         r.array(pl.groupStart);
         if (pl.groupStart.size() != static_cast<std::size_t>(nPairGroups) + 1) {
-            // Written with another grouping (a state of this session's first blocks):
+            // Written with another grouping (a state saved by a run with another number of pair groups):
             // the history is kept, the list is built anew.
             pl.groupStart.clear();
             t.listValid_ = false;

@@ -1,4 +1,4 @@
-// Beds carry what they were made for (issue 13): a saved bed records its recipe (counts,
+// Beds carry what they were made for: a saved bed records its recipe (counts,
 // packing region, seed, settling), a bed made otherwise is refused with the entry that
 // differs named, state-file mismatches name the setting, and a failed write names the file
 // and the OS reason and leaves an earlier state whole.

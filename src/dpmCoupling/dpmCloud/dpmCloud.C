@@ -117,8 +117,7 @@ dem::Settings Foam::dpmCloud::demSettings() const
     // Verlet skin of the neighbour list (default: the DEM's, for discs
     // chosen at each list build from the fastest particle's displacement,
     // 0.1-0.8 d_min; 0.1 d_min in the slab): a wider skin means fewer list
-    // builds but more candidate pairs each step (docs/performance.md,
-    // sessions 9 and 10). An entry fixes it
+    // builds but more candidate pairs each step (docs/performance.md). An entry fixes it
     if (dict_.found("neighbourSkin"))
     {
         scalar dMin = GREAT;

@@ -133,7 +133,7 @@ protected:
     // b s + 2 c u/s, is least at s = sqrt(2 c u/b) = sqrt(skinCostRatio d_min u); the ratio
     // makes 0.6 mm in the solver's bubbling bed (u ~ 1.2e-5 m per step), where fixed skins
     // of 0.45-1.0 mm ran alike and 0.15 mm 30 % slower, while a bed at rest goes to the
-    // narrowest skin (docs/performance.md, sessions 9 and 10). Within [0.1, 0.8] d_min.
+    // narrowest skin (docs/performance.md). Within [0.1, 0.8] d_min.
     static constexpr double skinCostRatio = 20.0;          // 2 c / (b d_min)
     static constexpr std::int64_t skinRecheckAfter = 100;  // steps without a build: build, to narrow
     static constexpr double skinMinFraction = 0.1;         // of d_min

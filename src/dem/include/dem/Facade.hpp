@@ -19,7 +19,7 @@ struct ParticleClass {
     double density;    ///< kg/m^3
 };
 
-/// Linear spring-dashpot contact coefficients (model.md section 3).
+/// Linear spring-dashpot contact coefficients (docs/theory/paper-model.md, "Particles").
 struct ContactSettings {
     double kn = 800.0;                 ///< normal stiffness, N/m
     double kt = -1.0;                  ///< tangential stiffness, N/m; < 0 means 2/7 kn
