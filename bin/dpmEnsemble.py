@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Ensemble statistics over random packings (seeds) for dpmStudy.
 
 A fluidized bed is chaotic: one run is one sample. The cases of a study that

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Cell values of OpenFOAM fields for the post-processing commands, without
 OpenFOAM's Python bindings (there are none): the internal field of a
 volScalarField or volVectorField written in ASCII or binary, and the cell

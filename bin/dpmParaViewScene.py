@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The ParaView scene of a dpmFoam2D case: the gas and the particles.
 
 Run inside ParaView (`paraview --script=dpmParaViewScene.py`) or pvbatch, as

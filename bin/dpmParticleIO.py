@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Particle output of dpmFoam2D: write, read and index it (no OpenFOAM needed).
 
 The contract with the solver, one file per output time:

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Shared steps of the dpm* picture commands: running the off-screen
 renderer, and the layout of the mixing plots."""
 

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Renders dpmFoam2D snapshots off-screen (run by dpmSnapshot and dpmMovie).
 
     dpmPvbatch dpmRender.py --case C --times T1 [T2 ...] \

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Figures of a dpmStudy's results/: M(t) per pressure and per mass
 fraction (the paper's Fig. 3; the mean over seeds with its 95 % band),
 the indices and the bed statistics against pressure (error bars: 95 %

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """results/ of a dpmStudy directory: one row per case, the ensembles over
 seeds with 95 % intervals, the paper's findings 2-4 as differences between
 ensembles, what each variant does to them (dpmStudyVerdicts) and the

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """dpmStudy on a Slurm cluster: the beds as one job array, the cases as a
 second array that depends on it, results/ as a last job; and the state of
 every bed and case of a study (local or Slurm runs) for -status.

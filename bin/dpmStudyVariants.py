@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The variants of bin/dpmStudy (-variant): named sets of dictionary edits
 applied to a study's beds and cases, checked against the template; and the
 foamDictionary edits they and the study's settings make."""

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """results/verdicts.md of a dpmStudy directory: what each variant does to
 the paper's findings 2-4, judged against the baseline's seeds.
 

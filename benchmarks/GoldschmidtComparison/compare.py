@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The Goldschmidt slab run by DPMFoam and by dpmFoam2D (./Allrun): wall
 times, and the bed's statistics measured alike from both runs.
 

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The voidage the spheres see in each code, and the drag it gives them.
 
   voidageSeen.py <run dir> [-transient 0.5] [-every 1]

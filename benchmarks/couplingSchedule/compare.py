@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The tables of benchmarks/couplingSchedule/Allrun (see there):
   compare.py <work dir> <startTime> <short endTime>"""
 

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Runs of van Wachem et al.'s (2001) pseudo-2D bed against the experiment
 and against Lethe's reported outcome (README.md).
 

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The records the comparison with van Wachem et al. (2001) reads: a run's
 pressure probe and bed height, and the experiment's digitized curves.
 

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The comparison's figures: the time series side by side over the
 experiment's windows (timeSeries.png) and the spectra on log axes
 (spectra.png)."""

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # benchmarks/GoldschmidtComparison on the tutorial's bed cut to 5 lattice
 # columns and 2 layers, 0.01 s in both codes. The cut must give what the
 # tutorial's lattice implies (spheres 3 mm apart, 5 across the depth: 5 x 5 x

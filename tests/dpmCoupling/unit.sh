@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Unit checks of the coupling library on the paper's 20 x 120 mesh; each
 # check states its source and tolerance.
 #   unit.sh <workDir> [application]   default Test-dpmCoupling; also

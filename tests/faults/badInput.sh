@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Bad input, table-driven: every row of badInput/*.cases breaks a fresh copy
 # of the solver test case (its mesh made) and runs a command; the command
 # must stop with a message matching the row's pattern (non-zero exit, never

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # One run a case (src/dpmCoupling/caseLock): while a solver runs in a case,
 # a second dpmFoam2D and a dpmPackBed there are refused at once (exit 1,
 # within 10 s) with one line naming the holder's pid, host and start and

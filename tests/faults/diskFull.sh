@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A full disk at each kind of write (particle file, index update, particle
 # state, gas fields), the case on a small tmpfs this test mounts: the run
 # pauses at the write (DPMFOAM2D_FAULT=<point>:<n>:stop), the test fills the

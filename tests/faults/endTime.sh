@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Every end time saved: endTime 0.025 with writeInterval 0.01 (gas and
 # particle files) leaves a complete, restartable 0.025 (gas fields,
 # uniform/dem.state, particles/0.025.h5 listed in particles.xdmf); a rerun

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # kill -9 at chosen moments of a short run (tests/faults/faultFunctions:
 # during a particle file, an index update, a particle state, the gas
 # fields' write), each at the write of 0.02 s, then a plain restart: the run

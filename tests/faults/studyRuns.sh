@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # bin/dpmStudy's runs and resumes on a reduced study (w 0.5 at 1 bar, 5 % of
 # Table 3's particles, 0.1 s of settling):
 #   1. -endTime 0.02, below the template's write interval (1 s): the case

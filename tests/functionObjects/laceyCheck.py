@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Independent check of the laceyIndex function object's output.
 
 The Lacey index and the segregation indices are recomputed here from the

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The laceyIndex function object writes what the Lacey index and the
 # segregation indices of the particles are, in a run and after the fact.
 #

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The laceyIndex function object stops a run with a FatalIOError that names
 # the dictionary, the entry and the allowed values for:
 #   an unknown varianceBasis, cellSize 0, an empty box, and a cloud with

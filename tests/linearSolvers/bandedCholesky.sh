@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The bandedCholesky direct solver: manufactured solutions on the paper's
 # 20 x 120 mesh (Test-bandedCholesky states the tolerances), and its errors
 # for a singular matrix and a bandwidth above its limit.

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # dpmBedStatistics on a synthetic bed (makeCase.py): voidage 0.40 in the
 # bed (cell centres below 0.12 m), 1 above, a bubble of voidage 0.9 (radius
 # 20 mm, centre 30 mm up at t = 1.5 s, 50 mm at 1.6 s). Expected from that

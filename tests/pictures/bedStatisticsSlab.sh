@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # dpmBedStatistics on a slab run (voidageModel slab3D): dpmFoam2D runs
 # hand-placed 3D spheres for 2 ms and dpmBedStatistics reads what it wrote.
 # The column: 8 x 40 cells of 7.5 mm, a slab 3 mm deep (one cell thick). In

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # dpmMovie and dpmPictures on synthetic cases: a movie of 3 output times
 # with -every 1 has 3 frames (ffprobe), with -every 2 two; dpmPictures makes
 # per case the snapshots asked for and the M(t) plot, and one combined plot

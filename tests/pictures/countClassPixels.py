@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Checks a snapshot's class colours against the particles drawn.
 
   countClassPixels.py <png> <particles.h5> <relTol>

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Synthetic data for the picture tests (no solver needed).
 
   makeCase.py particles <case> T1 [T2 ...]

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # dpmParaView -screenshot on a case the solver wrote (the test column, 600
 # small and 130 large discs, 0.02 s): the scene renders off-screen at the
 # asked height, both classes in their colours in the ratio of their drawn

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # dpmPlotMixing on three synthetic cases (makeCase.py mixing; the second
 # split over start times 0 and 2.5 as after a restart, the first directory
 # holding rows up to 3.0 that the restart replaces; the third as the second

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A -postProcess table next to the run's: `dpmFoam2D -postProcess -func
 # laceyIndex` after a run writes postProcessing/laceyIndex/<latest time>/
 # (OpenFOAM's <startTime> directory) with rows from time 0 at the saved

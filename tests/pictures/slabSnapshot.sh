@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # dpmSnapshot of a slab (3D spheres, particle files with real z) shows the
 # bed as a camera sees it through the front wall z = 0: a sphere nearer the
 # front hides the one behind it. The synthetic bed of makeCase.py (2250

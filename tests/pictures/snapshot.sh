@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # dpmSnapshot on a synthetic bed (makeCase.py): 2250 small discs (1.5 mm)
 # and 1000 large (2.5 mm), none overlapping or cut. Expected pixels of the
 # class colours in the ratio of the drawn areas, 2250*1.5^2/(1000*2.5^2)

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The particle index written by bin/dpmParticleIO.py (the solver's format)
 # opens in ParaView as a time series: 3 times, 3250 points each, with the
 # arrays velocity, omega, diameter, class, id, and class counts 2250/1000.

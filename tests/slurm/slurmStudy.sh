@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # dpmStudy on a real single-node Slurm cluster (Debian's slurmctld, slurmd,
 # munge, started here as root and stopped at the end). A tiny study: w 0.5
 # at 1 and 64 bar, 5 % of Table 3's particles, 0.1 s of settling.

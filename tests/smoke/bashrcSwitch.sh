@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Sourcing another checkout's etc/bashrc switches to it: its applications and
 # libraries come first and the other's leave PATH and LD_LIBRARY_PATH, also
 # when switching back to one sourced before (they once stayed behind the

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # blockMesh on the paper's gas mesh: 0.15 m x 0.90 m in 7.5 mm cells, one
 # cell thick. Expected: 20 x 120 = 2400 cells (paper, section 2).
 . "$(dirname "${BASH_SOURCE[0]}")/testFunctions" "$@"

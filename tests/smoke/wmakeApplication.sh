@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Compiles a trivial application with wmake against Debian's OpenFOAM
 # libraries and runs it. Expected API and patch level come from the installed
 # package's version (dpkg), not from the code.

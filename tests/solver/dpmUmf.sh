@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # dpmUmf: the minimum fluidization velocities of the case's drag model.
 # With ErgunWenYu below its switch voidage the drag is Ergun's (1952), so
 # the bed's Umf at voidage eps solves sum_k x_k Ergun(eps, d_k, U) =

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A fixed bed (particles frozen on a square lattice, 3 x 3 per gas cell, so
 # every bed cell has the same voidage) carries gas at a superficial velocity
 # U0 = 0.5 Umf. Expected: the Ergun pressure gradient

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A bubbling bed's time-averaged pressure drop equals the particles' weight
 # less their buoyancy over the bed's cross-section (width x depth), plus
 # the rate at which the particles gained upward momentum over the window:

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Small helpers for the solver tests: OpenFOAM fields (the project's own
 reader, bin/dpmFoamFields.py: ASCII or binary) and correlations."""
 import os

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A settled bed held at rest (frozen) in a closed column (no distributor,
 # no gas supply): the gas must stay at rest and its pressure hydrostatic,
 # p = p_out - rho_g g y, so that p_rgh (the pressure less the gas's

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The inlet velocity U0 from constant/gasProperties: U0byUmf x Umf or, with
 # excessVelocity instead, Umf + excessVelocity, where Umf is Wen and Yu's
 # (1966) for the mixture: mass-weighted harmonic mean diameter of the test

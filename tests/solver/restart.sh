@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Restart: 2N CFD steps in one go equal N steps, a restart from the written
 # time, and N more (N = 1000 DEM steps: the particles are renumbered by cell
 # every 200, at the restart step too). The particles (positions, velocities, spins) and the gas

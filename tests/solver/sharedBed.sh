@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A bed shared by two cases through initialBed/file:
 #   - dpmPackBed saves it (reporting the settling every 0.1 s); run again for the same particles it keeps it
 #     (nothing packed, the file unchanged);

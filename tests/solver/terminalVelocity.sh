@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # One 1.5 mm glass sphere falls through gas at rest at 64 bar in a closed
 # column. At its terminal velocity the drag balances weight less buoyancy:
 #   K(s, eps) s = (rho_p - rho_g) V_p g,

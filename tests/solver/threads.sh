@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Threads: 200 CFD steps (2000 DEM steps, with particles renumbered by cell)
 # on 1 and on 2 threads give the same particles and gas, bit for bit: the
 # DEM and the coupling loops sum in an order that does not depend on the

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # tutorials/UmfSweep's mechanism on two short steps: dpmFoam2D reads U0/Umf
 # only at start, so each velocity step is a restart with constant/sweepStep
 # changed. Steps of 0.1 s at U0/Umf 0.5 then 1.5 (0.05 s of settling).

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # bin/dpmStudy on a reduced study: w_small 0.5 at 1 and 64 bar with 5 % of
 # Table 3's particles (331 small + 72 large), 0.1 s of settling, 0.1 s of
 # gas, restart states every 0.02 s, two cases at once.

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # dpmStudy's ensemble arithmetic on synthetic tables with known answers (no
 # solver run): a study directory of hand-made cases whose laceyIndex and
 # segregation tables hold constants, summed up by `dpmStudy -results`.

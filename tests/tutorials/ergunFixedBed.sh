@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # tutorials/ergunFixedBed as a user runs it: Allrun, then its check.
 # Expected: the gas pressure gradient inside the frozen lattice equals
 # Ergun's at the voidage the drag sees within 3 % (ergunCheck; the same

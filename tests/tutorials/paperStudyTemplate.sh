@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The paper's case template (tutorials/paperStudy) makes the particles and
 # the gas of a (wSmall, pressure) pair set in constant/caseSettings.
 # Expected, from the paper's Table 3: 0.25 -> 3945 small / 2555 large,

@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # tutorials/pseudo2DBed as a user runs it (Allrun: blockMesh, dpmPackBed,
 # dpmFoam2D), on a twentieth of its spheres (the same mix, w = 0.5), 0.1 s
 # of settling and 0.02 s of gas. Expected, from the slab's geometry and the

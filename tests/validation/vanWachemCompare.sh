@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # benchmarks/vanWachemValidation/compare.py on synthetic records whose
 # figures are known in closed form: an "experiment" of sines (pressure
 # 80 sqrt2 sin(2 pi 2 t) over 3-6 s, bed height 0.12 + 0.02 sin(2 pi 2.5 t)

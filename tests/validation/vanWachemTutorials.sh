@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
 # benchmarks/vanWachemValidation/Allrun on tutorials/vanWachemBed (slab),
 # tutorials/vanWachemBed2D (discs) and the bracket 2D:DiFelice, cut to
 # 0.05 s of settling and 0.12 s of gas, then its compare.py on the three

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The paper's bed for the benchmarks (6610 small + 1440 large, 0.15 m wide, dt = 1e-5 s),
 // packed and settled once and cached in $DEM_BENCH_STATE (default

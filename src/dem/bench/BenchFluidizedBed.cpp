@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Speed of the DEM on the paper's bed fluidized, as the solver sees it: contacts that open
 // and close, the neighbour list rebuilt every few steps, particles renumbered by cell every
 // 200 steps. Figures go to docs/performance.md.

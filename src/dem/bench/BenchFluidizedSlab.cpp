@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Speed of the slab mode's DEM as the solver sees it: BM_SlabBed's slab (1500
 // small and 500 large spheres, 0.05 m x 15 mm) fluidized by BM_FluidizedBed's forcing
 // (demBench::setGas, H = 0.06 m, four times the settled bed's height), so contacts open and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Speed of the DEM on the paper's settled bed (6610 small + 1440 large, 0.15 m wide,
 // dt = 1e-5 s): particle-steps per second on 1 and 2 threads, at rest and with a uniform
 // drag that makes the bed roughly weightless. Figures go to docs/performance.md.

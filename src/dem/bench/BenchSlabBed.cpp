@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Speed of the slab mode's DEM: a settled binary bed of 1500 small and 500 large
 // spheres in a slab 0.05 m wide and 15 mm deep (Goldschmidt's depth, 6 large diameters),
 // dt = 1e-5 s, at rest, 1 and 2 threads: particle-steps per second, to set beside

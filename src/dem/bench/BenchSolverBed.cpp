@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Speed of the DEM on a state saved by the solver (dpmFoam2D's <time>/uniform/dem.state of
 // the paper's bubbling bed): its particles, contacts and coupling inputs (drag coefficient,
 // gas velocity, extra force) as the solver left them. The inputs stay frozen, so this is

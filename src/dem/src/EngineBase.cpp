@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The shared part of the 2D and slab engines (EngineBase.hpp): laws, step structure, the
 // CFD step's sub-steps, settling, and the neighbour list with its skin.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Random packing: random sequential addition of non-overlapping particles in a region,
 // largest class first (the small ones then fill the gaps), positions uniform for every
 // class so that the mixture is well mixed. Draws come from dem::Random (reproducible).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The thread loop over the pair groups of ContactList.hpp, shared by the 2D and slab
 // engines' pair forces (internal: the OpenMP pragmas stay in the library's sources).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The slab's random packing and its state file: everything the next step reads (particles,
 // forces of the last evaluation, the neighbour list in its order with the 3-vector
 // histories, the wall contacts, the reference positions), so a restart continues bit for

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The slab's streaming loops of StreamingLoops.hpp: one body each, compiled for the baseline
 // and for AVX2 (Compiled), as the 2D ones (StreamingLoops.cpp).
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Binary state file: everything that the next step reads, so a restarted run continues
 // bit for bit (positions, velocities, forces of the last evaluation, the neighbour list
 // in its order, the contact history, the reference positions of the skin criterion); the

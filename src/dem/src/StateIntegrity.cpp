@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Load-time checks of state files, shared by the 2D engine and the slab.
 
 #include "StateIntegrity.hpp"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What a state file must satisfy before its particles are used: the checksum and the end
 // marker of its bytes, the engine it was written by, and particles that a step can take

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The settings key and bed recipe of state files, and the comparisons that say which entry
 // differs (a refused file names the class, the setting, its value and the one asked for).
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The 2D streaming loops of StreamingLoops.hpp: one body each, compiled for the baseline and
 // for AVX2 (Compiled), and the choice between them (the slab's in SlabStreamingLoops.cpp).
 

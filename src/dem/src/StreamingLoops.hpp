@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The engines' loops that stream through the particle arrays, one particle at a time: the
 // first half-kick with the drift, and the second half-kick, for the 2D discs and for the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The 2D engine's own part (EngineBase does the rest): adding particles, the drift, the
 // pair forces over the groups, the wall contacts with the second half-kick, the energies.
 

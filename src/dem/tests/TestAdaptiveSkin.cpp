@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The adaptive Verlet skin (Settings::neighbourSkin < 0): sqrt(20 d_min u) for the fastest
 // particle's displacement u per step, within [0.1, 0.8] d_min; an explicit skin stays fixed.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Beds carry what they were made for: a saved bed records its recipe (counts,
 // packing region, seed, settling), a bed made otherwise is refused with the entry that
 // differs named, state-file mismatches name the setting, and a failed write names the file

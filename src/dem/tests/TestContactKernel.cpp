@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The shared pair-force kernel, checked by hand-computed values.
 
 #include "dem/ContactKernel.hpp"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fluid-coupling contract of the facade: the mean fluid force of a CFD step is
 // K (u - meanVelocity) + extra exactly, and it is the momentum the particle received.
 

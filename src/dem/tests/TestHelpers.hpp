@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Shared set-up of the DEM tests: the paper's particles (docs/theory/paper-model.md, "The case").
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The time integration: velocity Verlet, second order (checked on problems with exact
 // solutions), and energy conservation of an elastic frictionless gas of particles.
 

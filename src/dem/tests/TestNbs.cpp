@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // NBS (Munjiza & Andrews 1998) must find exactly the pairs of the brute-force oracle.
 
 #include "dem/NbsSearch.hpp"

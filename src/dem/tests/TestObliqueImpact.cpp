@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Oblique impact of a sphere on a wall with friction. Sliding throughout the
 // contact: the tangential impulse is mu times the normal one, m (1 + e) v_n, so
 //   v_t' = v_t - mu (1 + e) v_n,   |omega'| = 2.5 mu (1 + e) v_n / R   (I = 0.4 m R^2),

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Save -> load -> continue equals an uninterrupted run, and 1 thread equals 2 threads,
 // bit for bit.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Head-on restitution and contact duration (docs/theory/paper-model.md, "Particles"), and the bouncing
 // ball. Expected values: e = 0.97 is the input the damping is built from, and it is exact
 // for the linear spring-dashpot in continuous time; t_c from the formula in TestHelpers.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Constant-torque rolling resistance (Ai, Chen, Rotter and Ooi 2011, "type A"; model.md,
 // "Rolling resistance") in both engines: a sphere rolling on the floor decelerates at the
 // model's rate and stops where and when it predicts; on a slope it holds below the angle the

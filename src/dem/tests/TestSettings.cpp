@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every bad setting stops with a dem::Error naming the setting, its value and
 // the allowed range.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The paper's bed (6610 small + 1440 large, 0.15 m wide): random packing, then settling
 // under gravity as in the paper (about 1 s).
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The slab mode's beds: NBS equals brute force with the front and back walls,
 // a settled slab carries its weight on the floor, save/load and 1 vs 2 threads bit for bit,
 // and the mode's settings.

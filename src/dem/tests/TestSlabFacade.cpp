@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The facade dem::Simulation in the slab mode: it drives the slab engine bit for
 // bit, restarts and runs on 2 threads bit for bit, exposes the 3D coupling arrays, and keeps
 // the 2D and 3D members apart.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The slab mode's contact kernel: head-on restitution of every pair and of the
 // walls along directions not aligned with the axes, an oblique impact on a tilted wall
 // against the rigid-body impulse result, and energy conservation with e = 1, mu = 0.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Renumbering the slab's spheres by search cell leaves the physics alone: a pair whose
 // partners swap numbers keeps its tangential history as seen from the other partner (the
 // 3-vector changes sign), and a bed sorted now and then follows, to round-off, the one

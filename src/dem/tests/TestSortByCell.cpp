@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Renumbering the particles by search cell moves every particle's state along and leaves
 // the physics alone: the same contacts and, to round-off, the same trajectory.
 

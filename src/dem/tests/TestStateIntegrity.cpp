@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A state is checked on load: a flipped bit, 4 kB zeroed, bytes appended or a cut-short file
 // are refused by the checksum and end marker, naming the file and the damage; a state of the
 // other engine is named as such; a particle that is not finite, outside the box or on top

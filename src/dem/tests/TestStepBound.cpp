@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where the DEM step stops being accurate and stable for the linear spring-dashpot law
 // (docs/model.md, "The DEM step's bound"): a head-on pair of the smallest particles against
 // the continuous-time solution (restitution e exact, peak overlap delta_max = v0/omega_d

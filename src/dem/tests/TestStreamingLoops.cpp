@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The streaming loops (first half-kick with drift, second half-kick) compiled for AVX2 give
 // the baseline version's bits, particle by particle, in the vector body and the remainder:
 // the 2D discs' and the slab's spheres'.

@@ -1,3 +1,14 @@
+/*---------------------------------------------------------------------------*\
+    dpmFoam2D: soft-sphere CFD-DEM for gas-solid fluidized beds
+-------------------------------------------------------------------------------
+    SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+    SPDX-License-Identifier: GPL-3.0-or-later
+License
+    This file is part of dpmFoam2D, free software under the GNU General
+    Public License, version 3 or (at your option) any later version;
+    see the file LICENSE.
+\*---------------------------------------------------------------------------*/
+
 // Formulation A (Zhou et al. 2010 set I) of dpmCloud: the pressure-gradient
 // force on the particles, the drag K_A = eps_g K_B, the gas's share eps_g of
 // the pressure gradient and the drag-only reaction (docs/model.md,

@@ -1,4 +1,13 @@
 /*---------------------------------------------------------------------------*\
+    dpmFoam2D: soft-sphere CFD-DEM for gas-solid fluidized beds
+-------------------------------------------------------------------------------
+    SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+    SPDX-License-Identifier: GPL-3.0-or-later
+License
+    This file is part of dpmFoam2D, free software under the GNU General
+    Public License, version 3 or (at your option) any later version;
+    see the file LICENSE.
+-------------------------------------------------------------------------------
     dpmCloud in the slab mode (voidageModel slab3D): 3D spheres
     between a front wall z = 0 and a back wall z = depth, the mesh's
     thickness, in a gas one cell thick. The gas has no z component: the

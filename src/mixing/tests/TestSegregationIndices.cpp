@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Segregation indices on hand-made layouts (LaceyIndex.hpp documents the
 // definitions). Diameters 1 mm and 2 mm: a large particle has the volume of
 // 8 small ones, so a row of 1 large and a row of 8 small hold the same solid

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The search grid: a uniform grid of cells over the box (NbsSearch sorts the particles by
 // its cells; System::sortByCell numbers them in its order).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The pair-force arithmetic, shared by particle-particle and particle-wall contacts and by
 // the 2D mode (discs in the x-y plane) and the slab mode (3D spheres), templated on the

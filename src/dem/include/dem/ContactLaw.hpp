@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Coefficients of the linear spring-dashpot law for one kind of contact
 // (a pair of size classes, or a size class against a wall).

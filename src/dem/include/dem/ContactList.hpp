@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Candidate contacts from the last neighbour-list build, each with its contact history,
 // ordered in blocks of particles so that threads can add pair forces without races.

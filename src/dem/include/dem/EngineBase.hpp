@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What the 2D engine (System, discs) and the slab engine (SlabSystem, spheres) share, written
 // once: the contact-law tables, the neighbour list (search, history carried over, pair groups,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The DEM library as the OpenFOAM side sees it: plain settings structs and plain
 // particle arrays. Deliberately free of Eigen so that wmake code can include it.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Contact detection on a grid of cells (after NBS, Munjiza & Andrews 1998): the particles
 // counting-sorted by cell into contiguous arrays, each tested only against its own and the

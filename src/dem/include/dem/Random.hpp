@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Reproducible random draws: built on the raw output of std::mt19937_64, whose sequence
 // the standard fixes, because std:: distributions differ between library implementations.

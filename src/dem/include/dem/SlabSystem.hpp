@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The DEM engine of the slab mode (Settings::dimension = 3): spheres between a front wall
 // z = 0 and a back wall z = slabDepth and the box's walls around, with the contact kernel,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What a state file records of its settings and of how its bed was made, and the
 // comparisons that name every entry that differs, for the messages of refused files.

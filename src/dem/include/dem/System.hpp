@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The 2D DEM engine behind the facade: discs-as-spheres in the x-y plane, on EngineBase (the
 // step, the sub-steps, the neighbour list) with the disc's drift, pair and wall forces and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A sphere's impact on a wall at speed V and incidence angle theta from the normal, with spin
 // w0 about a = n x t (t: the tangent in the plane of incidence), read in the wall's frame:

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Chung & Ooi (2011, Granular Matter 13:643) test 3: normal impacts at several coefficients of
 // restitution, the rebound speed over the impact speed against the input e (the law's
 // damping is built to give e exactly in continuous time: the reference is analytic). On a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Chung & Ooi (2011, Granular Matter 13:643) tests 4-8: oblique impacts on a wall and of pairs.
 // Test 4: constant speed 3.9 m/s at incidence angles 5-85 degrees from the normal (Al oxide,
 // R = 2.5 mm, rho = 4000 kg/m^3, e = 0.98, mu = 0.092; Kratos DEM3D_chung_ooi_tests/test4_data):

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MFIX's DEM verification cases DEM01 (a sphere falls freely and bounces on the floor:
 // position and velocity against the analytic solution of the three stages, free fall,
 // contact as a damped oscillator under gravity, ballistic rebound) and DEM02 (the apex of

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MFIX's DEM verification case DEM05: oblique impacts of a sphere on a wall at 3.9 m/s and
 // incidence angles 0-65 degrees from the normal, with MFIX's linear spring-dashpot set-up
 // (tests/dem/DEM05/mfix.dat: d = 5 mm, rho = 4000 kg/m^3, kn = 1.72e7 N/m, kt = 1.48/1.72 kn,

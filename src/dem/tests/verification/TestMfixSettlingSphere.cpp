@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MFIX's DEM verification case DEM06 (a sphere settling to its terminal velocity) as far as
 // the DEM library alone represents it: the drag enters the library as a linear coefficient K
 // (force K (u - v), the coupling's input), so with Stokes' K = 3 pi mu d in gas at rest the

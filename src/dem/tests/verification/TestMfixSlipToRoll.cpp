@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MFIX's DEM verification case DEM04: a sphere resting on the floor is set sliding at v0
 // without spin; friction slows it and spins it up until its contact point stops slipping at
 // t = 2 v0/(7 mu g), when it rolls with v = 5/7 v0 and omega R = 5/7 v0 (rigid-body result for

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MFIX's DEM verification case DEM03: two stacked spheres compressed between the floor and
 // the ceiling under gravity (tests/dem/DEM03/mfix.dat: d = 1 mm, rho = 2e4 kg/m^3 below and
 // 1e4 above, kn = 1e3 N/m for pair and walls, no friction). Reference: the static equilibrium

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Shared set-up of the verification suite: the reference tables beside the repository, one
 // size class in either engine through the facade, and a particle placed and read as 3-vectors
