@@ -6,7 +6,9 @@
 # within 10 s) with one line naming the holder's pid, host and start and
 # the lock file, leaving the case as it was; -postProcess needs no lock;
 # a holder killed by SIGKILL leaves no stale lock: the next start continues
-# from its last complete time.
+# from its last complete time. A bed that two cases share, outside both,
+# is locked while a solver packs it: the second case's solver is refused
+# naming the first.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 
@@ -59,4 +61,34 @@ grep -q "read from .*/uniform/dem.state" log.dpmFoam2D || fail "the run after th
 [ -f "$next/uniform/dem.state" ] || fail "the run after the kill did not reach $next"
 grep -q "pid [0-9]* " .dpmLock || fail "no holder line after the restart"
 echo "ok   after kill -9 of the holder the next run started (restarted from $latest, ended at $next)"
-pass "a second solver or packer in a running case is refused naming the holder; kill -9 leaves no stale lock"
+
+# A shared bed outside the cases, missing: the first solver packs it (3 s of
+# settling) holding its directory's lock; the second is refused meanwhile
+cd "$workDir" || fail "cd"
+mkdir -p sharedBed
+for c in caseA caseB
+do
+    makeCase $c
+    setEntry $c/constant/particleProperties initialBed/settleTime 3
+    setEntry $c/constant/particleProperties initialBed/file "\"$workDir/sharedBed/bed.state\""
+done
+(cd caseA && exec dpmFoam2D > log.packer 2>&1) &
+packer=$!
+trap 'kill -9 $packer 2>/dev/null' EXIT
+for i in $(seq 1 300)
+do
+    grep -q "pid $packer " sharedBed/.dpmLock 2>/dev/null && break
+    kill -0 $packer 2>/dev/null || { tail -20 caseA/log.packer; fail "the packing solver ended"; }
+    sleep 0.1
+done
+grep -q "pid $packer " sharedBed/.dpmLock || fail "the packing solver did not lock the shared bed's directory"
+[ -f sharedBed/bed.state ] && fail "the bed was saved before the second solver could be tried (packing too fast)"
+(cd caseB && timeout 30 dpmFoam2D > log.second 2>&1)
+status=$?
+[ "$status" = 1 ] || { tail -5 caseB/log.second; fail "a second solver packing the shared bed: exit $status, not 1"; }
+grep -qE "the directory \"$workDir/sharedBed\" is in use by dpmFoam2D \(pid $packer " caseB/log.second \
+    || { tail -8 caseB/log.second; fail "the second solver's refusal does not name the packer"; }
+echo "ok   a shared bed being packed is refused to a second case: $(grep -m1 "is in use" caseB/log.second | cut -c1-160)"
+kill -9 $packer; wait $packer 2>/dev/null
+trap - EXIT
+pass "a second solver or packer in a running case is refused naming the holder; kill -9 leaves no stale lock; a shared bed is locked while packed"

@@ -71,16 +71,6 @@ Usage
 #include "dpmCloud.H"
 #include "caseChecks.H"
 #include "caseLock.H"
-
-#include <climits>
-#include <cstdlib>
-
-//- The directory's absolute path with links resolved ("" if it is missing)
-static Foam::fileName resolved(const Foam::fileName& dir)
-{
-    char buffer[PATH_MAX];
-    return ::realpath(dir.c_str(), buffer) ? Foam::fileName(buffer) : "";
-}
 #include "dictionaryScan.H"
 
 int main(int argc, char *argv[])
@@ -133,14 +123,10 @@ int main(int argc, char *argv[])
             "file", runTime.constant()/"packedBed.state"
         ).expand()
     );
-    const fileName caseDir = resolved(args.path());
-    const fileName bedDir = resolved(output.path());
-    autoPtr<caseLock> bedLock;
-    if (!bedDir.empty() && bedDir != caseDir && !bedDir.starts_with(caseDir + "/"))
-    {
-        // optional: a directory that takes no file is packBed's to name
-        bedLock.reset(new caseLock(bedDir, args.executable(), true));
-    }
+    const autoPtr<caseLock> bedLock
+    (
+        caseLock::outsideCase(output.path(), args.path(), args.executable())
+    );
     const bool packed = particles.packBed(output, args.found("overwrite"));
     particles.report(Info);
     particles.writeParticles();

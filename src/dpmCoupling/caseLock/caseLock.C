@@ -14,6 +14,7 @@ License
 #include "OSspecific.H"
 
 #include <cerrno>
+#include <climits>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -149,6 +150,30 @@ Foam::caseLock::~caseLock()
     {
         ::close(fd_);
     }
+}
+
+
+Foam::autoPtr<Foam::caseLock> Foam::caseLock::outsideCase
+(
+    const fileName& dir,
+    const fileName& caseDir,
+    const word& application
+)
+{
+    // Absolute paths with links resolved ("" for a directory that is missing)
+    const auto resolved = [](const fileName& d)
+    {
+        char buffer[PATH_MAX];
+        return ::realpath(d.c_str(), buffer) ? fileName(buffer) : fileName();
+    };
+    const fileName target = resolved(dir);
+    const fileName root = resolved(caseDir);
+    if (target.empty() || target == root || target.starts_with(root + "/"))
+    {
+        return nullptr;
+    }
+    // optional: a directory that takes no file is the writer's to name
+    return autoPtr<caseLock>(new caseLock(target, application, true));
 }
 
 

@@ -18,6 +18,7 @@ License
 
 #include "dpmCloud.H"
 #include "mathematicalConstants.H"
+#include "caseLock.H"
 
 #include <cerrno>
 #include <cmath>
@@ -353,9 +354,16 @@ void Foam::dpmCloud::initialise(const startMode mode)
     }
 
     // Random well-mixed packing, then settling under gravity with no gas;
-    // the bed's file is checked first, not after a long packing
+    // the bed's file is checked first, not after a long packing. A bed
+    // shared by cases is locked while it is made, so that two cases
+    // starting together do not both pack it
+    autoPtr<caseLock> bedLock;
     if (!file.empty())
     {
+        bedLock = caseLock::outsideCase
+        (
+            file.path(), mesh_.time().path(), program_invocation_short_name
+        );
         checkBedOutput(file);
     }
     packNewBed(r);
