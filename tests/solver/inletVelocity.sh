@@ -1,15 +1,16 @@
 #!/bin/bash
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
-# The inlet velocity U0 from constant/gasProperties: U0byUmf x Umf or, with
-# excessVelocity instead, Umf + excessVelocity, where Umf is Wen and Yu's
+# The inlet velocity U0 from constant/gasProperties: U0 as given (m/s),
+# U0byUmf x Umf or Umf + excessVelocity, where Umf is Wen and Yu's
 # (1966) for the mixture: mass-weighted harmonic mean diameter of the test
 # column's 600 small (1.5 mm) and 130 large (2.5 mm) particles, density
 # 2525 kg/m3, gas density 1.204 x pressure, viscosity 1.75e-5 Pa s
 # (computed here independently of the solver). Expected on the inlet patch
 # after 0.01 s: U = (0 U0 0) within 1e-6 relative, at 8 bar with U0byUmf
-# 1.25 and with excessVelocity 0.3 m/s. Both entries, or neither, stop the
-# solver with a message naming the file and the two entries.
+# 1.25, with excessVelocity 0.3 m/s and with U0 0.6 m/s (the log then
+# gives U0/Umf and U0 - Umf). Two of the entries, or none, stop the solver
+# with a message naming the file, the three entries and those given.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 
@@ -58,17 +59,37 @@ grep "U0/Umf" log.dpmFoam2D
 grep -q "(set by U0 - Umf 0.3 m/s)" log.dpmFoam2D || fail "log does not say U0 was set by U0 - Umf"
 check "$workDir/excess" "$(py -c "print($umf + 0.3)")"
 
-for c in both neither
+cp -r "$workDir/template" "$workDir/velocity" && cd "$workDir/velocity" || fail "cd"
+foamDictionary -entry U0byUmf -remove constant/gasProperties >/dev/null || fail "remove U0byUmf"
+setEntry constant/gasProperties U0 0.6
+runSolver
+expected=$(py -c "print('U0/Umf %.5g, U0 - Umf %.5g m/s, U0 0.6 m/s' % (0.6 / $umf, 0.6 - $umf))")
+grep "U0/Umf" log.dpmFoam2D
+grep -q "U0/Umf [0-9.]*, U0 - Umf [0-9.]* m/s, U0 0.6 m/s at patch inlet (set by U0 0.6 m/s)" log.dpmFoam2D \
+    || fail "log does not give U0/Umf and U0 - Umf for U0 0.6 m/s (expected about: $expected)"
+py - "$(grep -m1 'U0/Umf' log.dpmFoam2D)" "$umf" <<'PY' || fail "the log's U0/Umf and U0 - Umf"
+import re, sys
+m = re.search(r"U0/Umf (\S+), U0 - Umf (\S+) m/s", sys.argv[1])
+umf = float(sys.argv[2])
+ratio, excess = float(m.group(1)), float(m.group(2))
+print("U0/Umf %g (expected %g), U0 - Umf %g (expected %g)" % (ratio, 0.6 / umf, excess, 0.6 - umf))
+assert abs(ratio / (0.6 / umf) - 1) < 1e-6 and abs(excess - (0.6 - umf)) < 1e-6
+PY
+check "$workDir/velocity" 0.6
+
+for c in two three none
 do
     cp -r "$workDir/template" "$workDir/$c" && cd "$workDir/$c" || fail "cd"
-    if [ $c = both ]; then
-        setEntry constant/gasProperties excessVelocity 0.3
-    else
-        foamDictionary -entry U0byUmf -remove constant/gasProperties >/dev/null || fail "remove"
-    fi
+    case $c in
+        two)   setEntry constant/gasProperties excessVelocity 0.3; given="U0byUmf and excessVelocity" ;;
+        three) setEntry constant/gasProperties excessVelocity 0.3; setEntry constant/gasProperties U0 0.6
+               given="U0, U0byUmf and excessVelocity" ;;
+        none)  foamDictionary -entry U0byUmf -remove constant/gasProperties >/dev/null || fail "remove"
+               given="none" ;;
+    esac
     dpmFoam2D >log.dpmFoam2D 2>&1 && fail "$c: dpmFoam2D ran"
-    grep -qE "gasProperties\"? needs exactly one of the entries 'U0byUmf' .* and 'excessVelocity' .*; it has $c" \
-        log.dpmFoam2D || { tail -15 log.dpmFoam2D; fail "$c: no message naming the two entries"; }
+    grep -qE "gasProperties\"? needs exactly one of the entries 'U0' .*, 'U0byUmf' .* and 'excessVelocity' .*; it has $given" \
+        log.dpmFoam2D || { tail -15 log.dpmFoam2D; fail "$c: no message naming the three entries and those given"; }
     echo "ok   $c: $(grep -m1 "needs exactly one" log.dpmFoam2D | sed 's/^ *//')"
 done
-pass "U0 = U0byUmf x Umf or Umf + excessVelocity, exactly one of them required"
+pass "U0 as given, U0byUmf x Umf or Umf + excessVelocity, exactly one of them required"

@@ -120,6 +120,25 @@ void Foam::dpmCloud::checkSettings
 
 void Foam::dpmCloud::checkDemStep(const dem::Settings& settings) const
 {
+    // The bounds need valid particles and contact: an invalid one is the
+    // DEM's to name (dem::Simulation, next)
+    if (settings.classes.empty() || !(settings.contact.kn > 0))
+    {
+        return;
+    }
+    const scalar e = settings.contact.restitution;
+    if (!(e > 0 && e <= 1))
+    {
+        return;
+    }
+    for (const auto& c : settings.classes)
+    {
+        if (!(c.diameter > 0) || !(c.density > 0))
+        {
+            return;
+        }
+    }
+
     // Eq. 7's bound lets a dense bed blow up; the measured bounds are in
     // t_c, the contact duration of a pair of the lightest class
     const scalar dt = settings.dt;

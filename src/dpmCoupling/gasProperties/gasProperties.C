@@ -62,15 +62,26 @@ Foam::gasProperties::gasProperties(const objectRegistry& obr)
     const bool byVelocity = found("U0");
     const bool byRatio = found("U0byUmf");
     const bool byExcess = found("excessVelocity");
-    const int nGiven = int(byVelocity) + int(byRatio) + int(byExcess);
-    if (nGiven != 1)
+    wordList given;
+    if (byVelocity) given.append("U0");
+    if (byRatio) given.append("U0byUmf");
+    if (byExcess) given.append("excessVelocity");
+    if (given.size() != 1)
     {
+        string has("none");
+        if (given.size() == 2)
+        {
+            has = given[0] + " and " + given[1];
+        }
+        else if (given.size() == 3)
+        {
+            has = given[0] + ", " + given[1] + " and " + given[2];
+        }
         FatalIOErrorInFunction(*this)
             << name() << " needs exactly one of the entries 'U0' (the"
             << " superficial velocity in m/s, in (0, inf)), 'U0byUmf' (U0/Umf,"
             << " in (0, inf)) and 'excessVelocity' (U0 - Umf in m/s, in"
-            << " (0, inf)); it has " << (nGiven ? "more than one" : "none")
-            << exit(FatalIOError);
+            << " (0, inf)); it has " << has.c_str() << exit(FatalIOError);
     }
     if (byVelocity)
     {
