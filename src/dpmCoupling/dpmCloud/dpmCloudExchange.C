@@ -61,16 +61,9 @@ void Foam::dpmCloud::interpolateGas
     #pragma omp parallel for num_threads(nThreads) schedule(static)
     for (label i = 0; i < n; ++i)
     {
-        label cells[4];
-        scalar w[4];
-        grid_.interpolationStencil(x[i], y[i], cells, w);
-        scalar e = 0;
-        vector u = Zero;
-        for (int k = 0; k < 4; ++k)
-        {
-            e += w[k]*eps[cells[k]];
-            u += w[k]*Uc[cells[k]];
-        }
+        scalar e;
+        vector u;
+        grid_.interpolate(x[i], y[i], eps, Uc, e, u);
         voidageP_[i] = e;
         gasVelocityP_[i] = u;
         diameterP_[i] = d[i];

@@ -53,8 +53,9 @@ void Foam::dpmCloud::writeStartParticles(const volVectorField& U)
         return;
     }
 
-    // interpolateGas's interpolation, into arrays of the file's own: the
-    // coupling's are left as the first step makes them
+    // The coupling's interpolation (cartesianGrid2D::interpolate), into
+    // arrays of the file's own: the coupling's are left as the first step
+    // makes them
     const label n = size();
     const scalarField& eps = voidage_.primitiveField();
     const vectorField& Uc = U.primitiveField();
@@ -64,18 +65,7 @@ void Foam::dpmCloud::writeStartParticles(const volVectorField& U)
     vectorField gasVelocityP(n);
     for (label i = 0; i < n; ++i)
     {
-        label cells[4];
-        scalar w[4];
-        grid_.interpolationStencil(x[i], y[i], cells, w);
-        scalar e = 0;
-        vector u = Zero;
-        for (int c = 0; c < 4; ++c)
-        {
-            e += w[c]*eps[cells[c]];
-            u += w[c]*Uc[cells[c]];
-        }
-        voidageP[i] = e;
-        gasVelocityP[i] = u;
+        grid_.interpolate(x[i], y[i], eps, Uc, voidageP[i], gasVelocityP[i]);
     }
     writer_->write(*dem_, voidageP, gasVelocityP, t, time.timeName());
 }
