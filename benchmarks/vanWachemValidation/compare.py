@@ -5,7 +5,8 @@
 and against Lethe's reported outcome (README.md).
 
   compare.py <case> | --run <label>=<case> [--run ...] [--reference <dir>]
-             [--transient 2] [--figures <dir>] [--table <file.md>]
+             [--transient 2] [--until <s>] [--window <s>] [--figures <dir>]
+             [--table <file.md>]
 
 For each run (tutorials/vanWachemBed, tutorials/vanWachemBed2D or a
 bracket of either) and for the experiment's digitized curves: the mean, rms
@@ -138,12 +139,25 @@ def signal_statistics(t, x, kind):
     return s
 
 
-def run_statistics(case, transient):
-    """The table's figures of one run, after the transient (or over the
-    second half of a run too short for it, with a note)."""
-    tp, p = data.pressure_probe(case)
-    th, h, hmax = data.bed_heights(case)
+def run_records(case):
+    """The run's pressure at the probe and its bed heights: (tp, p), (th, h, hmax)."""
+    return data.pressure_probe(case), data.bed_heights(case)
+
+
+def run_statistics(case, transient, until=None, records=None):
+    """The table's figures of one run, after the transient and up to until
+    (default its end), or over the second half of a run too short for it,
+    with a note. records: run_records(case), read once for many windows."""
+    (tp, p), (th, h, hmax) = records or run_records(case)
     end = min(tp[-1], th[-1])
+    if until is not None:
+        if until > end + 1e-9:
+            raise ValueError("%s: --until %g s: the run ends at %.4g s" % (case, until, end))
+        end = until
+        keep = tp <= end + 1e-9
+        tp, p = tp[keep], p[keep]
+        keep = th <= end + 1e-9
+        th, h, hmax = th[keep], h[keep], hmax[keep]
     start = transient
     if end - start < MIN_SAMPLES / RATES["height"]:
         start = 0.5 * end
@@ -168,6 +182,28 @@ def run_statistics(case, transient):
         out.update(heightMean=hs["mean"], heightRms=hs["rms"], heightRange=hs["peakToPeak"],
                    heightFrequency=hs["frequency"], heightFrequencyResolution=hs["resolution"],
                    maxHeightMean=ms["mean"], maxHeightRms=ms["rms"])
+    return out
+
+
+def window_statistics(case, transient, until, window, step=1.0):
+    """Each figure of one run over windows of window s, starting every step
+    s from transient to until (default the run's end): the median and the
+    range over the windows, the scatter a chaotic bed shows between records
+    as long as the window."""
+    records = run_records(case)
+    whole = run_statistics(case, transient, until, records)
+    end = whole["end"]
+    starts = np.arange(transient, end - window + 1e-9, step)
+    if len(starts) < 2:
+        raise ValueError("%s: --window %g s: the record %.4g-%.4g s holds fewer than two "
+                         "windows" % (case, window, transient, end))
+    parts = [run_statistics(case, t0, t0 + window, records) for t0 in starts]
+    out = dict(whole, windows=len(parts), window=window)
+    for key, _, _, _ in ROWS:
+        values = [p[key] for p in parts if key in p]
+        if values:
+            out[key] = float(np.median(values))
+            out[key + "Range"] = (min(values), max(values))
     return out
 
 
@@ -206,7 +242,12 @@ def table(runs, experiment):
     rows = [head]
     for key, label, unit, scale in ROWS:
         def value(s):
-            return "%.4g" % (scale * s[key]) if s is not None and key in s else "-"
+            if s is None or key not in s:
+                return "-"
+            if key + "Range" in s:
+                lo, hi = s[key + "Range"]
+                return "%.4g (%.3g-%.3g)" % (scale * s[key], scale * lo, scale * hi)
+            return "%.4g" % (scale * s[key])
         row = [label, unit, value(experiment)]
         for _, s in runs:
             row += [value(s), verdict(key, s, experiment)]
@@ -242,6 +283,12 @@ def main():
     ap.add_argument("--transient", type=float, default=2.0,
                     help="s of gas before the statistics (default 2: the experiment's "
                     "records begin at 2 s)")
+    ap.add_argument("--until", type=float,
+                    help="s of gas at which the statistics end (default each run's end): "
+                    "runs of different lengths compared over one window")
+    ap.add_argument("--window", type=float,
+                    help="s of each window: every figure of a run as the median (and "
+                    "range) over windows starting every second (default: one record)")
     ap.add_argument("--figures", help="folder of the PNG figures (default "
                     "<first case>/validationFigures)")
     ap.add_argument("--table", help="also write the table as Markdown to this file")
@@ -274,14 +321,21 @@ def main():
     for label, case in specs:
         try:
             data.pio.check_case(case)
-            runs.append((label, run_statistics(case, a.transient)))
+            if a.window:
+                runs.append((label, window_statistics(case, a.transient, a.until,
+                                                      a.window)))
+            else:
+                runs.append((label, run_statistics(case, a.transient, a.until)))
         except (OSError, ValueError) as e:
             sys.exit("compare.py: %s" % e)
 
     print("van Wachem et al. (2001): 45 mm above the distributor; bed height: the "
           "height below which %g %% of the particles' tops lie" % (100 * data.BED_FRACTION))
     for (label, case), (_, s) in zip(specs, runs):
-        print("  %s: %s, statistics over %.4g-%.4g s" % (label, case, s["start"], s["end"]))
+        print("  %s: %s, statistics over %.4g-%.4g s%s" % (
+            label, case, s["start"], s["end"],
+            ", median (range) of %d windows of %g s" % (s["windows"], s["window"])
+            if "windows" in s else ""))
     if experiment:
         print("  experiment: %s (pressure %g-%g s, bed height %g-%g s)"
               % (folder, *WINDOWS["pressure"], *WINDOWS["height"]))

@@ -14,7 +14,10 @@
 # 0.012/sqrt2 m (0.5 %), the highest particle's top 0.3 m; the verdicts
 # +10 % within (pressure rms), +25 % OUTSIDE (pressure frequency), +8 %
 # within (mean bed height), -40 % OUTSIDE (bed height rms), +0 % within
-# (its frequency). Bad input refused in one line naming the file or entry.
+# (its frequency). Over windows of 2 s (--window 2, 2-8 s: five windows,
+# whole periods) every window has the same figures: median and range the
+# whole record's (0.5 %). Bad input refused in one line naming the file or
+# entry.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 compare=$testsDir/../benchmarks/vanWachemValidation/compare.py
 py() { /usr/bin/python3 "$@"; }
@@ -102,7 +105,37 @@ for label, expected in verdicts:
 sys.exit(0 if ok else 1)
 PY
 
+py "$compare" --run synthetic=run --reference experiment --figures figures \
+    --window 2 --until 8 --table windows.md > log.windows 2>&1 \
+    || { cat log.windows; fail "compare.py --window"; }
+grep -q "median (range) of 5 windows of 2 s" log.windows || fail "--window: $(cat log.windows)"
+py - <<'PY' || fail "the figures of the synthetic records over windows"
+import re, sys
+rows = {}
+for line in open("windows.md"):
+    cells = [c.strip() for c in line.strip().strip("|").split("|")]
+    if len(cells) > 4:
+        rows[cells[0]] = cells
+ok = True
+for label, expected in [("pressure: rms fluctuation", 88.0),
+                        ("pressure: dominant frequency", 2.5),
+                        ("bed height: rms (amplitude)", 12 / 2**0.5)]:
+    m = re.match(r"(\S+) \((\S+)-(\S+)\)$", rows[label][3])
+    values = [float(v) for v in m.groups()] if m else []
+    good = len(values) == 3 and all(abs(v - expected) <= 5e-3 * expected for v in values)
+    ok &= good
+    print("%-32s windows '%s' expected %.5g: %s" % (label, rows[label][3], expected,
+                                                  "ok" if good else "WRONG"))
+sys.exit(0 if ok else 1)
+PY
+
 # Bad input: one line naming the entry or the file
+out=$(py "$compare" --run synthetic=run --reference experiment --until 9 2>&1) \
+    && fail "--until past the run's end accepted"
+grep -q "until 9 s: the run ends at 8 s" <<<"$out" || fail "--until past the end: $out"
+out=$(py "$compare" --run synthetic=run --reference experiment --window 4 --transient 4 2>&1) \
+    && fail "a window longer than half the record accepted"
+grep -q "fewer than two windows" <<<"$out" || fail "--window too long: $out"
 out=$(py "$compare" --run synthetic 2>&1) && fail "--run without '=' accepted"
 grep -q "expected <label>=<case directory>" <<<"$out" || fail "--run without '=': $out"
 out=$(py "$compare" run --reference missing 2>&1) && fail "a missing reference folder accepted"
