@@ -199,6 +199,9 @@ def window_statistics(case, transient, until, window, step=1.0):
                          "windows" % (case, window, transient, end))
     parts = [run_statistics(case, t0, t0 + window, records) for t0 in starts]
     out = dict(whole, windows=len(parts), window=window)
+    for key in ("pressureFrequencyResolution", "heightFrequencyResolution"):
+        if key in parts[0]:
+            out[key] = parts[0][key]        # a window's, 1/window
     for key, _, _, _ in ROWS:
         values = [p[key] for p in parts if key in p]
         if values:
