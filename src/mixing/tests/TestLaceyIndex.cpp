@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Lacey index on hand-made configurations with known answers (model.md
-// section 5). Diameters 1 mm and 2 mm give the equivalent-particle weight
+// Lacey index on hand-made configurations with known answers (docs/model.md,
+// "Mixing"). Diameters 1 mm and 2 mm give the equivalent-particle weight
 // w = (2/1)^3 = 8, which keeps the hand arithmetic exact. Tolerance: 1e-12
 // (absolute) on values of order 1, the arithmetic being a few sums.
 #include "mixing/LaceyIndex.hpp"

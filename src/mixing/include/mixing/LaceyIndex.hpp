@@ -3,8 +3,8 @@
 #pragma once
 /// \file LaceyIndex.hpp
 /// \brief Mixing and segregation measures of a binary 2D particle bed: the
-///        Lacey mixing index (Norouzi et al. 2012, eqs 8-11; model.md
-///        section 5) and vertical/horizontal segregation indices.
+///        Lacey mixing index (Norouzi et al. 2012, eqs 8-11; docs/model.md,
+///        "Mixing") and vertical/horizontal segregation indices.
 ///
 /// Plain C++17, no OpenFOAM: the laceyIndex function object and the unit
 /// tests call the same functions with plain arrays (one entry per particle).
