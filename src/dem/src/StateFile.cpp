@@ -11,8 +11,9 @@
 // reads its current version only (2D 6, slab 4; StateConversion.hpp): the loader holds one
 // layout, and every state it reads carries its checksum and the run's record. A change of
 // the layout raises the version and teaches dpmConvertState (StateConversion.cpp) to read
-// the previous one. load() refuses a file of an older version (2D 2-5, slab 1-3) naming its
-// version and the command that converts it, and any other version as not a valid state.
+// the previous one; the converter keeps reading every earlier version (2D 2-5, slab 1-3).
+// load() refuses a file of an older version naming its version and the command that
+// converts it, and any other version as not a valid state.
 
 #include "StateIntegrity.hpp"
 #include "dem/StateConversion.hpp"
