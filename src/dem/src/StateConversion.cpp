@@ -41,7 +41,9 @@ public:
     template <class V> void array(V& a)
     {
         const auto n = value<std::uint64_t>();
-        if (n > (bytes_.size() - at_) / sizeof(a[0])) fail("an array length of " + std::to_string(n));
+        if (n > (bytes_.size() - at_) / sizeof(a[0])) {
+            fail("an array length of " + std::to_string(n));
+        }
         a.resize(n);
         raw(a.data(), n * sizeof(a[0]));
     }
@@ -113,10 +115,23 @@ void writeRecipe(Out& out, const std::optional<BedRecipe>& r)
     out.value(r->keTolerance);
 }
 
-template <class List> void readPairs(In& in, List& l) { in.array(l.i); in.array(l.j); in.array(l.law); in.array(l.xi); }
-template <class List> void writePairs(Out& out, const List& l) { out.array(l.i); out.array(l.j); out.array(l.law); out.array(l.xi); }
-template <class List> void readWalls(In& in, List& l) { in.array(l.start); in.array(l.wall); in.array(l.xi); }
-template <class List> void writeWalls(Out& out, const List& l) { out.array(l.start); out.array(l.wall); out.array(l.xi); }
+// A pair list's arrays but its groups, and a wall list's, in the writers' order
+template <class List> void readPairs(In& in, List& l)
+{
+    in.array(l.i); in.array(l.j); in.array(l.law); in.array(l.xi);
+}
+template <class List> void writePairs(Out& out, const List& l)
+{
+    out.array(l.i); out.array(l.j); out.array(l.law); out.array(l.xi);
+}
+template <class List> void readWalls(In& in, List& l)
+{
+    in.array(l.start); in.array(l.wall); in.array(l.xi);
+}
+template <class List> void writeWalls(Out& out, const List& l)
+{
+    out.array(l.start); out.array(l.wall); out.array(l.xi);
+}
 
 /// A 2D state of versions 2-5 in the current layout.
 std::string convertDisc(In& in, std::uint32_t version, std::string& notes)
@@ -171,7 +186,10 @@ std::string convertDisc(In& in, std::uint32_t version, std::string& notes)
     out.array(pairs.groupStart);
     writeWalls(out, walls);
     out.seal(discStateMagic);
-    if (version < 4) notes += "it carries no record of how its bed was packed: a case checks its counts per class only\n";
+    if (version < 4) {
+        notes += "it carries no record of how its bed was packed: a case checks its counts "
+                 "per class only\n";
+    }
     return out.bytes();
 }
 
@@ -192,7 +210,9 @@ std::string convertSlab(In& in, std::uint32_t version, std::string& notes)
         // The skin of these versions: 0.1 d_min (d_min from the key: the class count, then
         // diameter and density per class), unless the run set Settings::neighbourSkin.
         const std::size_t classes = key.empty() ? 0 : static_cast<std::size_t>(key[0]);
-        if (classes == 0 || key.size() < 1 + 2 * classes) in.fail("a settings key of " + std::to_string(key.size()) + " values");
+        if (classes == 0 || key.size() < 1 + 2 * classes) {
+            in.fail("a settings key of " + std::to_string(key.size()) + " values");
+        }
         double dMin = key[1];
         for (std::size_t k = 1; k < classes; ++k) dMin = std::min(dMin, key[1 + 2 * k]);
         skin = 0.1 * dMin;
@@ -229,7 +249,10 @@ std::string convertSlab(In& in, std::uint32_t version, std::string& notes)
     out.array(pairs.groupStart);
     writeWalls(out, walls);
     out.seal(slabStateMagic);
-    if (version < 2) notes += "it carries no record of how its bed was packed: a case checks its counts per class only\n";
+    if (version < 2) {
+        notes += "it carries no record of how its bed was packed: a case checks its counts "
+                 "per class only\n";
+    }
     return out.bytes();
 }
 
@@ -282,11 +305,13 @@ StateConversion convertState(const std::string& inPath, const std::string& outPa
     c.fromVersion = in.value<std::uint32_t>();
     c.toVersion = current;
     if (c.fromVersion < oldest || c.fromVersion > current) {
-        in.fail(std::string(disc ? "2D" : "slab") + " state version " + std::to_string(c.fromVersion)
-                + ", expected " + std::to_string(oldest) + " to " + std::to_string(current));
+        in.fail(std::string(disc ? "2D" : "slab") + " state version "
+                + std::to_string(c.fromVersion) + ", expected " + std::to_string(oldest)
+                + " to " + std::to_string(current));
     }
     if (c.fromVersion == current) {
-        verifyChecksum(bytes, disc ? discStateMagic : slabStateMagic, "state file '" + inPath + "'");
+        verifyChecksum(bytes, disc ? discStateMagic : slabStateMagic,
+                       "state file '" + inPath + "'");
         return c;
     }
     const std::string converted =

@@ -31,9 +31,8 @@ int usage()
 
 int main(int argc, char** argv)
 {
-    if (argc < 2 || argc > 3 || std::string(argv[1]) == "-help" || std::string(argv[1]) == "--help") {
-        return usage();
-    }
+    const std::string first = argc > 1 ? argv[1] : "";
+    if (argc < 2 || argc > 3 || first == "-help" || first == "--help") return usage();
     const std::string in = argv[1];
     const bool inPlace = argc == 2;
     const std::string out = inPlace ? in : argv[2];
