@@ -8,12 +8,11 @@
 // bed, so that a case starting from it checks every entry of how it was made, the skin and
 // the step of the last list build (the adaptive skin's state), and a checksum (64-bit
 // FNV-1a of every byte before it) ahead of the end marker.
-// Version policy: one current version is written (4). Versions 1-3, written before states
-// carried a checksum, are still read, with a warning (loadWarning()) that their integrity
-// cannot be checked (version 1: counts per class only; before 3 the skin was fixed at
-// 0.1 d_min or Settings::neighbourSkin); any other version is refused.
+// Version policy: as the 2D engine's (StateFile.cpp): this version only is written and
+// read, an older one (1-3) is refused naming the command that converts it.
 
 #include "StateIntegrity.hpp"
+#include "dem/StateConversion.hpp"
 #include "dem/Random.hpp"
 #include "dem/SlabSystem.hpp"
 #include "dem/StateRecord.hpp"
@@ -34,11 +33,7 @@ namespace dem {
 namespace {
 
 const char (&slabMagic)[16] = slabStateMagic;
-constexpr std::uint32_t slabVersion = 4;
-constexpr std::uint32_t slabVersionNoChecksum = 3;
-constexpr std::uint32_t slabVersionFixedSkin = 2;   // no skin, no step of the last build
-constexpr std::uint32_t slabVersionNoRecipe = 1;
-constexpr double fixedSkinFraction = 0.1;           // of d_min, the skin before version 3
+constexpr std::uint32_t slabVersion = slabStateVersion;
 
 std::vector<double> slabKey(const Settings& s)
 {
@@ -230,20 +225,17 @@ void SlabSystem::load(const std::string& path)
     if (std::memcmp(head, slabMagic, sizeof(slabMagic)) != 0) fail("wrong file type");
     std::uint32_t version = 0;
     value(version);
-    if (version < slabVersionNoRecipe || version > slabVersion) {
-        fail("version " + std::to_string(version) + ", expected "
-             + std::to_string(slabVersionNoRecipe) + " to " + std::to_string(slabVersion));
+    if (version >= oldestSlabStateVersion && version < slabVersion) {
+        throw Error("slab state file '" + path + "' is of version " + std::to_string(version)
+                    + ", older than this build reads (" + std::to_string(slabVersion)
+                    + "): convert it with '" + convertCommand(path) + "'");
     }
-    std::string warning;
-    if (version == slabVersion) {
-        verifyChecksum(file, slabMagic, "slab state file '" + path + "'");
-    } else {
-        warning = "slab state file '" + path + "' is of version " + std::to_string(version)
-                  + ", written before states carried a checksum: read without an integrity "
-                    "check (saving it again writes version " + std::to_string(slabVersion) + ")";
+    if (version != slabVersion) {
+        fail("version " + std::to_string(version) + ", expected " + std::to_string(slabVersion));
     }
+    verifyChecksum(file, slabMagic, "slab state file '" + path + "'");
     std::vector<char> record;
-    if (version == slabVersion) array(record);
+    array(record);
     std::vector<double> key;
     array(key);
     const std::vector<double> here = slabKey(settings_);
@@ -257,7 +249,7 @@ void SlabSystem::load(const std::string& path)
     }
     SlabSystem t(settings_);
     std::uint8_t hasRecipe = 0;
-    if (version >= 2) value(hasRecipe);
+    value(hasRecipe);
     if (hasRecipe) {
         BedRecipe recipe;
         array(recipe.countPerClass);
@@ -272,16 +264,12 @@ void SlabSystem::load(const std::string& path)
     }
     value(t.stepCount_);
     value(t.listBuilds_);
-    double fileSkin = settings_.neighbourSkin >= 0.0 ? settings_.neighbourSkin
-                                                     : fixedSkinFraction * t.smallestDiameter_;
-    t.lastBuildStep_ = t.stepCount_;   // before version 3 the adaptive skin's clock starts here
-    if (version > slabVersionFixedSkin) {
-        value(fileSkin);
-        value(t.lastBuildStep_);
-        if (!(fileSkin > 0.0) || t.lastBuildStep_ < -1 || t.lastBuildStep_ > t.stepCount_) {
-            fail("a skin of " + formatValue(fileSkin) + " m built at step "
-                 + std::to_string(t.lastBuildStep_));
-        }
+    double fileSkin = 0.0;
+    value(fileSkin);
+    value(t.lastBuildStep_);
+    if (!(fileSkin > 0.0) || t.lastBuildStep_ < -1 || t.lastBuildStep_ > t.stepCount_) {
+        fail("a skin of " + formatValue(fileSkin) + " m built at step "
+             + std::to_string(t.lastBuildStep_));
     }
     // An adaptive skin continues from the file's (within its bounds); a fixed one stays,
     // and a list of another skin is built anew.
@@ -305,10 +293,8 @@ void SlabSystem::load(const std::string& path)
     array(t.pairs_.i); array(t.pairs_.j); array(t.pairs_.law); array(t.pairs_.xi);
     array(t.pairs_.groupStart);
     array(t.wallContacts_.start); array(t.wallContacts_.wall); array(t.wallContacts_.xi);
-    if (version > slabVersionNoChecksum) {
-        std::uint64_t checksum = 0;
-        value(checksum);   // verified above
-    }
+    std::uint64_t checksum = 0;
+    value(checksum);   // verified above
     char tail[sizeof(slabMagic)];
     bytes(tail, sizeof(tail));
     if (std::memcmp(tail, slabMagic, sizeof(slabMagic)) != 0) fail("no end marker");
@@ -333,7 +319,6 @@ void SlabSystem::load(const std::string& path)
     checkLoadedParticles({n, t.p_.x.data(), t.p_.y.data(), t.p_.z.data(), t.p_.vx.data(),
                           t.p_.vy.data(), t.p_.vz.data(), t.p_.radius.data()},
                          settings_.box, settings_.slabDepth, "slab state file '" + path + "'");
-    t.loadWarning_ = warning;
     t.runRecord_.assign(record.begin(), record.end());
     t.listValid_ = ready != 0 && sameSkin;
     t.forcesValid_ = ready != 0;

@@ -7,12 +7,16 @@
 // region, seed, settling), so that a case can check that a bed was made for its particles;
 // the step of the last list build (the adaptive skin's clock; the skin itself is the key's
 // last entry); and a checksum (64-bit FNV-1a of every byte before it) ahead of the end marker.
-// Version policy: one current version is written (6). Versions 2-5, written before states
-// carried a checksum, are still read, with a warning (loadWarning()) that their integrity
-// cannot be checked (no recipe before 4, no build step before 5, a version-2 list rebuilt);
-// any other version is refused.
+// Version policy: the version after the magic names the layout. Each engine writes and
+// reads its current version only (2D 6, slab 4; StateConversion.hpp): the loader holds one
+// layout, and every state it reads carries its checksum and the run's record. A change of
+// the layout raises the version and teaches dpmConvertState (StateConversion.cpp) to read
+// the previous one; the converter keeps reading every earlier version (2D 2-5, slab 1-3).
+// load() refuses a file of an older version naming its version and the command that
+// converts it, and any other version as not a valid state.
 
 #include "StateIntegrity.hpp"
+#include "dem/StateConversion.hpp"
 #include "dem/StateRecord.hpp"
 #include "dem/System.hpp"
 
@@ -31,14 +35,7 @@ namespace dem {
 namespace {
 
 const char (&magic)[16] = discStateMagic;
-constexpr std::uint32_t version = 6;
-constexpr std::uint32_t version5 = 5;   // no checksum
-constexpr std::uint32_t version2 = 2;   // stored pair forces and a per-particle index; read, list rebuilt
-
-/// Per-pair record of version-2 files, read and dropped.
-struct Version2Force {
-    double fx, fy, ft;
-};
+constexpr std::uint32_t version = discStateVersion;
 
 /// Writes through C stdio, so that a failure keeps its OS reason (errno).
 class Writer {
@@ -193,20 +190,17 @@ void StateFile::load(System& s, const std::string& path)
     r.read(head, sizeof(head));
     if (std::memcmp(head, magic, sizeof(magic)) != 0) r.fail("wrong file type");
     const auto fileVersion = r.value<std::uint32_t>();
-    if (fileVersion < version2 || fileVersion > version) {
-        r.fail("version " + std::to_string(fileVersion) + ", expected " + std::to_string(version2)
-               + " to " + std::to_string(version));
+    if (fileVersion >= oldestDiscStateVersion && fileVersion < version) {
+        throw Error("state file '" + path + "' is of version " + std::to_string(fileVersion)
+                    + ", older than this build reads (" + std::to_string(version)
+                    + "): convert it with '" + convertCommand(path) + "'");
     }
-    std::string warning;
-    if (fileVersion == version) {
-        verifyChecksum(bytes, magic, "state file '" + path + "'");
-    } else {
-        warning = "state file '" + path + "' is of version " + std::to_string(fileVersion)
-                  + ", written before states carried a checksum: read without an integrity "
-                    "check (saving it again writes version " + std::to_string(version) + ")";
+    if (fileVersion != version) {
+        r.fail("version " + std::to_string(fileVersion) + ", expected " + std::to_string(version));
     }
+    verifyChecksum(bytes, magic, "state file '" + path + "'");
     std::vector<char> record;
-    if (fileVersion == version) r.array(record);
+    r.array(record);
     std::vector<double> key;
     r.array(key);
     const std::vector<double> here = settingsKey(s.settings_, s.skin_);
@@ -221,7 +215,7 @@ void StateFile::load(System& s, const std::string& path)
     if (t.adaptiveSkin_) t.setSkin(std::clamp(key.back(), t.skinMin_, t.skinMax_));
     const bool sameSkin = key.back() == t.skin_;
     t.recipe_.reset();
-    if (fileVersion >= 4 && r.value<std::uint8_t>() != 0) {
+    if (r.value<std::uint8_t>() != 0) {
         BedRecipe recipe;
         r.array(recipe.countPerClass);
         recipe.region = r.value<Box>();
@@ -236,8 +230,7 @@ void StateFile::load(System& s, const std::string& path)
     }
     t.stepCount_ = r.value<std::int64_t>();
     t.listBuilds_ = r.value<std::int64_t>();
-    // Before version 5 the adaptive skin's clock starts at the load.
-    t.lastBuildStep_ = fileVersion >= version5 ? r.value<std::int64_t>() : t.stepCount_;
+    t.lastBuildStep_ = r.value<std::int64_t>();
     t.listValid_ = r.value<std::uint8_t>() != 0;
     t.forcesValid_ = r.value<std::uint8_t>() != 0;
     t.contactCount_ = static_cast<std::size_t>(r.value<std::uint64_t>());
@@ -245,28 +238,15 @@ void StateFile::load(System& s, const std::string& path)
     t.p_.forEachArray([&](auto& a) { r.array(a); });
     PairList& pl = t.pairs_;
     r.array(pl.i); r.array(pl.j); r.array(pl.law); r.array(pl.xi);
-    if (fileVersion == version2) {
-        // Pairs in the search's order, not in blocks: a fresh list is built on the first
-        // step (the history carries over; the sums' order changes at round-off).
-        std::vector<Version2Force> force;
-        std::vector<int> start, entries;
-        r.array(force); r.array(start); r.array(entries);
-        if (force.size() != pl.i.size() || entries.size() != 2 * pl.i.size()) {
-            r.fail("inconsistent array sizes or indices");
-        }
+    r.array(pl.groupStart);
+    if (pl.groupStart.size() != static_cast<std::size_t>(nPairGroups) + 1) {
+        // Written with another grouping (a state saved by a run with another number of pair groups):
+        // the history is kept, the list is built anew.
         pl.groupStart.clear();
         t.listValid_ = false;
-    } else {
-        r.array(pl.groupStart);
-        if (pl.groupStart.size() != static_cast<std::size_t>(nPairGroups) + 1) {
-            // Written with another grouping (a state saved by a run with another number of pair groups):
-            // the history is kept, the list is built anew.
-            pl.groupStart.clear();
-            t.listValid_ = false;
-        }
     }
     r.array(t.wallContacts_.start); r.array(t.wallContacts_.wall); r.array(t.wallContacts_.xi);
-    if (fileVersion == version) r.value<std::uint64_t>();   // the checksum, verified above
+    r.value<std::uint64_t>();   // the checksum, verified above
     char tail[sizeof(magic)];
     r.read(tail, sizeof(tail));
     if (std::memcmp(tail, magic, sizeof(magic)) != 0) r.fail("no end marker");
@@ -311,7 +291,6 @@ void StateFile::load(System& s, const std::string& path)
     checkLoadedParticles({n, t.p_.x.data(), t.p_.y.data(), nullptr, t.p_.vx.data(), t.p_.vy.data(),
                           nullptr, t.p_.radius.data()},
                          t.settings_.box, 0.0, "state file '" + path + "'");
-    t.loadWarning_ = warning;
     t.runRecord_.assign(record.begin(), record.end());
     if (!sameSkin) t.listValid_ = false;   // candidates of the old skin: build anew
     s = std::move(t);

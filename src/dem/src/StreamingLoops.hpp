@@ -10,6 +10,13 @@
 // variable DEM_SIMD says baseline; the build stays portable. Neither version fuses
 // multiply-adds (AVX2 without FMA), so both do the same IEEE operations per particle: the
 // same bits (dem.StreamingLoops.AvxGivesTheBaselineBits).
+//
+// Why not GCC's target_clones("avx2", "default"): it compiles the same two versions (GCC 12:
+// the same instructions but for the order of commuted operands and stack slots; the same
+// bits and, within the noise, the same time in demBench's fluidized bed and slab), but its
+// resolver picks one by the CPU when the library is loaded and offers no other: DEM_SIMD,
+// and the test above, which runs both versions in one process, would then need a second
+// compile of each body for the baseline, the work Compiled does here.
 
 #include "dem/Facade.hpp"   // Box
 

@@ -6,6 +6,7 @@
 // and the OS reason and leaves an earlier state whole.
 
 #include "TestHelpers.hpp"
+#include "dem/StateConversion.hpp"
 #include "dem/StateRecord.hpp"
 
 #include <gtest/gtest.h>
@@ -186,11 +187,12 @@ TEST(BedRecord, RestartMismatchNamesTheSetting)
     std::remove(path.c_str());
 }
 
-TEST(BedRecord, VersionThreeBedIsCheckedOnItsCounts)
+TEST(BedRecord, ConvertedVersionThreeBedIsCheckedOnItsCounts)
 {
-    // A version-3 file: the version-6 layout without the run record (after the version),
-    // the checksum (before the end marker), the recipe flag and the step of the last list
-    // build (after the step count and the build count).
+    // A version-3 file (before beds recorded their recipe), converted: the version-6 layout
+    // without the run record (after the version), the checksum (before the end marker), the
+    // recipe flag and the step of the last list build (after the step count and the build
+    // count).
     const std::string path = tempPath("bedVersion3.state");
     Simulation sim(settings());
     sim.packRandom(recipe().countPerClass, recipe().region, 42);
@@ -210,6 +212,7 @@ TEST(BedRecord, VersionThreeBedIsCheckedOnItsCounts)
     bytes.erase(flag + 1 + 2 * sizeof(std::int64_t), sizeof(std::int64_t));
     bytes.erase(flag, 1);
     writeBytes(path, bytes);
+    convertState(path, path);
 
     Simulation old(settings());
     EXPECT_FALSE(old.loadBed(path, recipe()));   // counts match: read, not fully checked

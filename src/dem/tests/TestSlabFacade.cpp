@@ -172,7 +172,7 @@ TEST(SlabFacade, SaveAndLoadContinueBitForBit)
 
 TEST(SlabFacade, BedRecordAndCountsPerClass)
 {
-    // packBed keeps its recipe and save() records it (slab state version 2): loadBed checks
+    // packBed keeps its recipe and save() records it: loadBed checks
     // every entry of it (returns true), refuses a bed made otherwise naming the entry, and
     // leaves the slab as it was; addParticle makes the particles no longer the recipe's.
     Simulation sim(slabFacadeSettings(1));

@@ -3,8 +3,7 @@
 // A state is checked on load: a flipped bit, 4 kB zeroed, bytes appended or a cut-short file
 // are refused by the checksum and end marker, naming the file and the damage; a state of the
 // other engine is named as such; a particle that is not finite, outside the box or on top
-// of another is refused naming it; a state of the version before the checksum still loads,
-// with a warning.
+// of another is refused naming it.
 
 #include "StateIntegrity.hpp"
 #include "TestHelpers.hpp"
@@ -219,28 +218,5 @@ TEST(StateIntegrity, BadParticlesAreRefusedNamingThem)
         e = loadError(s, path);
         EXPECT_TRUE(has(e, "particles 0 at") && has(e, "and 1 at")
                     && has(e, "closer than half the sum of their radii")) << e;
-    }
-}
-
-TEST(StateIntegrity, AStateWithoutChecksumLoadsWithAWarning)
-{
-    // The version before the checksum: the same layout without the run record (after the
-    // version) and the 8 bytes before the end marker.
-    for (const Settings& s : {discSettings(), slabSettings()}) {
-        const std::string path = savedState(s, "old" + std::to_string(s.dimension));
-        std::string bytes = readAll(path);
-        const std::uint32_t old = s.dimension == 2 ? 5 : 3;
-        std::memcpy(&bytes[16], &old, sizeof(old));
-        bytes.erase(bytes.size() - 24, 8);
-        std::uint64_t recordLength = 0;
-        std::memcpy(&recordLength, &bytes[20], sizeof(recordLength));
-        bytes.erase(20, 8 + recordLength);
-        writeAll(path, bytes);
-        Simulation sim(s);
-        ASSERT_NO_THROW(sim.load(path));
-        EXPECT_TRUE(has(sim.loadWarning(), path)
-                    && has(sim.loadWarning(), "written before states carried a checksum"))
-            << sim.loadWarning();
-        EXPECT_EQ(sim.size(), 160u);
     }
 }

@@ -230,25 +230,26 @@ public:
     void save(const std::string& path) const;
     /// Reads a state written by save(); throws dem::Error naming the file if it is bad or
     /// was written with other settings: damaged (checksum, truncated, bytes appended), of
-    /// the other engine (ForeignStateError), or with a particle not finite, outside the box
-    /// or nearly on top of another.
+    /// the other engine (ForeignStateError), of an older version (naming dpmConvertState,
+    /// StateConversion.hpp), or with a particle not finite, outside the box or nearly on
+    /// top of another.
     void load(const std::string& path);
     /// Reads a bed saved after packBed() and checks that it was made by `recipe` with these
     /// settings; throws dem::Error naming the file and every entry that differs (class,
     /// setting, the file's value and this one), leaving the simulation untouched. A file
-    /// without the record (state version <= 3, or particles not packed) is checked on its
-    /// counts per class only: returns false then, true when fully checked. The slab's
-    /// files record the recipe since their version 2.
+    /// without the record (particles not packed, or converted from a version before the
+    /// record) is checked on its counts per class only: returns false then, true when fully
+    /// checked.
     bool loadBed(const std::string& path, const BedRecipe& recipe);
     /// The recipe of the particles (packBed, or the file they were loaded from); none if
     /// they were placed otherwise.
     const BedRecipe* recipe() const;
-    /// What the last load() or loadBed() could not check (a file of an older version,
-    /// without a checksum); empty if none.
+    /// What the last load() or loadBed() could not check; empty if none (every state of the
+    /// current version is checked whole).
     const std::string& loadWarning() const;
     /// A text the caller keeps with the state (what the run was made with: its coupling
-    /// models), saved by save(); load() and loadBed() set the file's (empty for files of
-    /// the versions before it: 2D 5, slab 3).
+    /// models), saved by save(); load() and loadBed() set the file's (empty for a file
+    /// converted from a version before the record).
     const std::string& runRecord() const;
     void setRunRecord(const std::string& record);
 

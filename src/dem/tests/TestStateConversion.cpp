@@ -1,0 +1,346 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The engines read their current state version only; an older file is refused naming its
+// version and the command that converts it, and dpmConvertState writes it in the current
+// version. The older files are made here from a current one by the layout changes of each
+// version (StateConversion.cpp): the converted file must be the current writer's bytes for
+// the same particles, with what the older version did not carry as the converter documents
+// (no run record; 2D before 5 and slab before 3: the skin's clock at the file's step; 2D
+// before 4 and slab 1: no recipe; 2D 2: the list built anew; slab before 3: skin 0.1 d_min).
+
+#include "StateIntegrity.hpp"
+#include "TestHelpers.hpp"
+#include "dem/Particles.hpp"
+#include "dem/SlabSystem.hpp"
+#include "dem/StateConversion.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+using namespace dem;
+using namespace dem::test;
+
+namespace {
+
+const Box box{0.0, 0.03, 0.0, 0.1};
+
+Settings settingsOf(int dimension)
+{
+    Settings s = paperSettings(box);
+    s.gravity[1] = -9.81;
+    if (dimension == 3) {
+        s.dimension = 3;
+        s.slabDepth = 0.0075;
+    }
+    return s;
+}
+
+std::string fileName(const std::string& tag)
+{
+    return ::testing::TempDir() + "stateConversion_" + tag + ".state";
+}
+
+std::string readAll(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void writeAll(const std::string& path, const std::string& bytes)
+{
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+/// A packed bed (with its recipe), stepped a little: contacts, history, a list in groups.
+std::string savedBed(int dimension, const std::string& path)
+{
+    Simulation sim(settingsOf(dimension));
+    BedRecipe r;
+    r.countPerClass = {120, 40};
+    r.region = {0.0, 0.03, 0.0, 0.04};
+    r.seed = 42;
+    r.settleTime = 0.002;
+    sim.packBed(r);
+    sim.advance(0.0005);
+    sim.save(path);
+    return readAll(path);
+}
+
+template <class T> T get(const std::string& b, std::size_t at)
+{
+    T v;
+    std::memcpy(&v, &b[at], sizeof(T));
+    return v;
+}
+
+template <class T> void put(std::string& b, std::size_t at, T v) { std::memcpy(&b[at], &v, sizeof(T)); }
+
+/// The offsets of a current state's fields, walked from its layout (StateFile::write,
+/// SlabSystem::save).
+struct Layout {
+    std::size_t record, key, recipe, recipeEnd, step, lastBuild, skin = 0, listValid = 0;
+    std::size_t groupStart, groupStartEnd, pairs, checksum;
+    std::uint64_t particles = 0, pairCount = 0;
+
+    Layout(const std::string& b, int dimension)
+    {
+        auto array = [&](std::size_t at, std::size_t element) {
+            return at + 8 + element * get<std::uint64_t>(b, at);
+        };
+        record = 20;
+        key = array(record, 1);
+        recipe = array(key, 8);
+        recipeEnd = recipe + 1;
+        if (b[recipe]) recipeEnd = array(recipe + 1, 4) + 32 + 8 + 8 + 8;
+        step = recipeEnd;   // step count, list builds
+        std::size_t at;
+        if (dimension == 2) {
+            lastBuild = step + 16;
+            listValid = lastBuild + 8;
+            at = listValid + 1 + 1 + 8 + 8;   // flags, contacts, largest overlap
+        } else {
+            skin = step + 16;
+            lastBuild = skin + 8;
+            at = array(lastBuild + 8, 8);     // the walls
+        }
+        particles = get<std::uint64_t>(b, at);
+        auto walk = [&](auto& arrays) {
+            arrays.forEachArray([&](auto& a) { at = array(at, sizeof(a[0])); });
+        };
+        if (dimension == 2) {
+            Particles p;
+            walk(p);
+        } else {
+            SlabParticles p;
+            walk(p);
+            at += 1;   // ready
+        }
+        pairs = at;
+        pairCount = get<std::uint64_t>(b, at);
+        const std::size_t history = dimension == 2 ? 8 : 24;
+        at = array(array(array(array(at, 4), 4), 4), history);
+        groupStart = at;
+        groupStartEnd = array(at, 4);
+        checksum = b.size() - 16 - 8;
+    }
+};
+
+void resign(std::string& b)
+{
+    put(b, b.size() - 24, fnv1a64(b.data(), b.size() - 24));
+}
+
+/// A current state `b` in the layout of `version`, and in `expected` the current layout of
+/// what the converter makes of it.
+std::string olderDisc(const std::string& b, std::uint32_t version, std::string& expected)
+{
+    const Layout l(b, 2);
+    std::string old = b;
+    expected = b;
+    if (version == 2) {
+        // Pair forces (3 doubles), a per-particle start (n + 1) and entries (2 per pair) in
+        // place of the groups; the converter makes the list invalid and drops the groups.
+        std::string index;
+        auto array = [&](std::uint64_t n, std::size_t element) {
+            index.append(reinterpret_cast<const char*>(&n), 8);
+            index.append(n * element, '\x5a');
+        };
+        array(l.pairCount, 24);
+        array(l.particles + 1, 4);
+        array(2 * l.pairCount, 4);
+        old.replace(l.groupStart, l.groupStartEnd - l.groupStart, index);
+        expected.replace(l.groupStart, l.groupStartEnd - l.groupStart, std::string(8, '\0'));
+        expected[l.listValid] = 0;
+    }
+    old.erase(old.size() - 24, 8);   // checksum
+    if (version <= 4) {
+        old.erase(l.lastBuild, 8);
+        put(expected, l.lastBuild, get<std::int64_t>(b, l.step));
+    }
+    if (version <= 3) {
+        old.erase(l.recipe, l.recipeEnd - l.recipe);
+        expected.replace(l.recipe, l.recipeEnd - l.recipe, std::string(1, '\0'));
+    }
+    old.erase(l.record, 8 + get<std::uint64_t>(b, l.record));
+    put(old, 16, version);
+    resign(expected);
+    return old;
+}
+
+std::string olderSlab(const std::string& b, std::uint32_t version, std::string& expected,
+                      double dMin)
+{
+    const Layout l(b, 3);
+    std::string old = b;
+    expected = b;
+    old.erase(old.size() - 24, 8);   // checksum
+    if (version <= 2) {
+        old.erase(l.skin, 16);
+        put(expected, l.skin, 0.1 * dMin);
+        put(expected, l.lastBuild, get<std::int64_t>(b, l.step));
+    }
+    if (version <= 1) {
+        old.erase(l.recipe, l.recipeEnd - l.recipe);
+        expected.replace(l.recipe, l.recipeEnd - l.recipe, std::string(1, '\0'));
+    }
+    old.erase(l.record, 8 + get<std::uint64_t>(b, l.record));
+    put(old, 16, version);
+    resign(expected);
+    return old;
+}
+
+std::string errorOf(const std::function<void()>& f)
+{
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+} // namespace
+
+TEST(StateConversion, EveryOlderDiscVersionBecomesTheCurrentWritersBytes)
+{
+    const std::string current = fileName("disc");
+    const std::string b = savedBed(2, current);
+    ASSERT_EQ(get<std::uint32_t>(b, 16), discStateVersion);
+    ASSERT_EQ(b[Layout(b, 2).recipe], 1);   // a recipe to carry over (versions 4, 5)
+    for (std::uint32_t version = oldestDiscStateVersion; version < discStateVersion; ++version) {
+        SCOPED_TRACE("2D version " + std::to_string(version));
+        std::string expected;
+        const std::string old = fileName("disc" + std::to_string(version));
+        const std::string converted = old + ".converted";
+        writeAll(old, olderDisc(b, version, expected));
+
+        // Refused by the engine, naming the version and the command
+        Simulation refused(settingsOf(2));
+        const std::string e = errorOf([&] { refused.load(old); });
+        EXPECT_TRUE(has(e, "state file '" + old + "' is of version " + std::to_string(version)
+                           + ", older than this build reads (6): convert it with 'dpmConvertState "
+                           + old + "'"))
+            << e;
+
+        const StateConversion c = convertState(old, converted);
+        EXPECT_EQ(c.dimension, 2);
+        EXPECT_EQ(c.fromVersion, version);
+        EXPECT_EQ(c.toVersion, discStateVersion);
+        EXPECT_TRUE(readAll(converted) == expected);
+        if (version == discStateVersion - 1) {
+            EXPECT_TRUE(expected == b);   // nothing missing
+        }
+
+        Simulation sim(settingsOf(2));
+        ASSERT_NO_THROW(sim.load(converted));
+        EXPECT_EQ(sim.size(), 160u);
+        EXPECT_EQ(sim.recipe() != nullptr, version >= 4);
+    }
+}
+
+TEST(StateConversion, EveryOlderSlabVersionBecomesTheCurrentWritersBytes)
+{
+    const std::string current = fileName("slab");
+    const std::string b = savedBed(3, current);
+    ASSERT_EQ(get<std::uint32_t>(b, 16), slabStateVersion);
+    for (std::uint32_t version = oldestSlabStateVersion; version < slabStateVersion; ++version) {
+        SCOPED_TRACE("slab version " + std::to_string(version));
+        std::string expected;
+        const std::string old = fileName("slab" + std::to_string(version));
+        const std::string converted = old + ".converted";
+        writeAll(old, olderSlab(b, version, expected, dSmall));
+
+        Simulation refused(settingsOf(3));
+        const std::string e = errorOf([&] { refused.load(old); });
+        EXPECT_TRUE(has(e, "slab state file '" + old + "' is of version " + std::to_string(version)
+                           + ", older than this build reads (4): convert it with 'dpmConvertState "
+                           + old + "'"))
+            << e;
+
+        const StateConversion c = convertState(old, converted);
+        EXPECT_EQ(c.dimension, 3);
+        EXPECT_EQ(c.fromVersion, version);
+        EXPECT_TRUE(readAll(converted) == expected);
+        if (version == slabStateVersion - 1) {
+            EXPECT_TRUE(expected == b);
+        }
+        EXPECT_EQ(has(c.notes, "0.1 d_min = 0.00015 m"), version <= 2) << c.notes;
+
+        Simulation sim(settingsOf(3));
+        ASSERT_NO_THROW(sim.load(converted));
+        EXPECT_EQ(sim.size(), 160u);
+        EXPECT_EQ(sim.recipe() != nullptr, version >= 2);
+    }
+}
+
+TEST(StateConversion, CurrentUnknownAndForeignFilesAreNamed)
+{
+    const std::string current = fileName("current");
+    const std::string b = savedBed(2, current);
+    const std::string out = fileName("notWritten");
+    std::remove(out.c_str());
+    const StateConversion c = convertState(current, out);
+    EXPECT_EQ(c.fromVersion, discStateVersion);
+    EXPECT_EQ(c.toVersion, discStateVersion);
+    EXPECT_FALSE(std::filesystem::exists(out));
+
+    std::string unknown = b;
+    put(unknown, 16, std::uint32_t{9});
+    writeAll(current, unknown);
+    EXPECT_TRUE(has(errorOf([&] { convertState(current, out); }),
+                    "state file '" + current + "' is not a valid DEM state: 2D state version 9, "
+                    "expected 2 to 6"));
+    Simulation sim(settingsOf(2));
+    EXPECT_TRUE(has(errorOf([&] { sim.load(current); }),
+                    "state file '" + current + "' is not a valid DEM state: version 9, expected 6"));
+
+    writeAll(current, "a bed of particles, in words");
+    EXPECT_TRUE(has(errorOf([&] { convertState(current, out); }), "wrong file type"));
+
+    // An older file cut short: named, nothing written
+    std::string expected;
+    std::string old = olderDisc(b, 5, expected);
+    writeAll(current, old.substr(0, old.size() / 2));
+    EXPECT_TRUE(has(errorOf([&] { convertState(current, out); }),
+                    "state file '" + current + "' is not a valid DEM state: "));
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// The command: in place, the original kept beside it; its usage without arguments.
+TEST(StateConversion, TheCommandConvertsInPlaceAndKeepsTheOriginal)
+{
+    const std::string b = savedBed(2, fileName("command"));
+    std::string expected;
+    const std::string old = olderDisc(b, 3, expected);
+    const std::string path = fileName("command3");
+    writeAll(path, old);
+    const std::string log = path + ".log";
+    const std::string command = std::string(DEM_CONVERT_STATE) + " " + path + " >" + log + " 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << readAll(log);
+    EXPECT_TRUE(readAll(path) == expected);
+    EXPECT_TRUE(readAll(path + ".version3") == old);
+    const std::string said = readAll(log);
+    EXPECT_TRUE(has(said, "Converted '" + path + "' (2D state version 3) to '" + path
+                          + "' (version 6)")
+                && has(said, "Note: it carries no checksum: its integrity could not be checked"))
+        << said;
+
+    const std::string usage = std::string(DEM_CONVERT_STATE) + " >" + log + " 2>&1";
+    EXPECT_NE(std::system(usage.c_str()), 0);
+    EXPECT_TRUE(has(readAll(log), "Usage: dpmConvertState <in> [<out>]")) << readAll(log);
+
+    const std::string missing = std::string(DEM_CONVERT_STATE) + " " + path + ".none >" + log + " 2>&1";
+    EXPECT_NE(std::system(missing.c_str()), 0);
+    EXPECT_TRUE(has(readAll(log), "dpmConvertState: cannot open state file '" + path + ".none'"))
+        << readAll(log);
+}
