@@ -57,10 +57,13 @@ const faultSpec& spec()
 bool armedUnder(const std::string& prefix)
 {
     const faultSpec& f = spec();
-    return f.what != action::none && f.point.compare(0, prefix.size(), prefix) == 0;
+    return
+        f.what != action::none
+     && f.point.compare(0, prefix.size(), prefix) == 0;
 }
 
 
+//- The DEM state writer's hook (dem/WritePoints.hpp)
 void atDemPoint(const char* point)
 {
     Foam::faultInjection::at(point);
