@@ -28,19 +28,6 @@ makeFaultCase template
 cp -r template reference
 (cd reference && runSolver)
 
-# wait until process $1 is stopped (state T), at most 120 s
-waitStopped()
-{
-    local i state
-    for i in $(seq 1200)
-    do
-        state=$(awk '{print $3}' "/proc/$1/stat" 2>/dev/null) || return 1
-        [ "$state" = T ] && return 0
-        sleep 0.1
-    done
-    return 1
-}
-
 # One kind of write: in a subshell that ends the paused run if it fails
 fullDiskAt()
 {

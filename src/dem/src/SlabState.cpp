@@ -17,6 +17,7 @@
 #include "dem/SlabSystem.hpp"
 #include "dem/StateRecord.hpp"
 #include "dem/System.hpp"
+#include "dem/WritePoints.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -179,6 +180,8 @@ void SlabSystem::save(const std::string& path) const
         }
         array(wallData);
         p_.forEachArray([&](const auto& a) { array(a); });
+        out.flush();
+        atWritePoint("stateWrite.part");
         const std::uint8_t ready = listValid_ && forcesValid_;
         value(ready);
         array(pairs_.i); array(pairs_.j); array(pairs_.law); array(pairs_.xi);
@@ -193,6 +196,7 @@ void SlabSystem::save(const std::string& path) const
             throw Error("cannot write slab state file '" + path + "': " + std::strerror(errno));
         }
     }
+    atWritePoint("stateWrite.rename");
     if (std::rename(tmp.c_str(), path.c_str()) != 0) {
         std::remove(tmp.c_str());
         throw Error("cannot rename '" + tmp + "' to '" + path + "': " + std::strerror(errno));

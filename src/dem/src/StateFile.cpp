@@ -19,6 +19,7 @@
 #include "dem/StateConversion.hpp"
 #include "dem/StateRecord.hpp"
 #include "dem/System.hpp"
+#include "dem/WritePoints.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -55,6 +56,11 @@ public:
     {
         hash_ = fnv1a64(static_cast<const char*>(data), n, hash_);
         if (error_ == 0 && n > 0 && std::fwrite(data, 1, n, out_) != n) error_ = errno ? errno : EIO;
+    }
+    /// Hands the buffered bytes to the OS (a kill then leaves them in the file).
+    void flush()
+    {
+        if (error_ == 0 && std::fflush(out_) != 0) error_ = errno ? errno : EIO;
     }
     /// FNV-1a of every byte written so far.
     std::uint64_t hash() const { return hash_; }
@@ -139,6 +145,8 @@ void StateFile::write(const System& s, Writer& w)
     w.value(static_cast<std::uint64_t>(s.contactCount_));
     w.value(s.maxOverlap_);
     s.p_.forEachArray([&](const auto& a) { w.array(a); });
+    w.flush();
+    atWritePoint("stateWrite.part");
     const PairList& pl = s.pairs_;
     w.array(pl.i); w.array(pl.j); w.array(pl.law); w.array(pl.xi);
     w.array(pl.groupStart);
@@ -173,6 +181,7 @@ void StateFile::save(const System& s, const std::string& path)
         std::remove(tmp.c_str());
         fail(reason(error) + " (an earlier file there is left as it was)");
     }
+    atWritePoint("stateWrite.rename");
     if (std::rename(tmp.c_str(), path.c_str()) != 0) {
         const int renameError = errno;
         std::remove(tmp.c_str());

@@ -315,11 +315,11 @@ Foam::dpmCloud::dpmCloud
 
     subSteps();         // the DEM step must divide the CFD step
     warnThinSlab();
-    initialise(mode);
     if (mode == startMode::run)
     {
-        faultInjection::watchFieldWrite(mesh);
+        faultInjection::install(mesh);      // before a bed is packed and saved
     }
+    initialise(mode);
 
     writer_.reset
     (

@@ -17,7 +17,6 @@ License
 #include "dpmCloud.H"
 #include "faultInjection.H"
 
-#include <unistd.h>
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -139,22 +138,7 @@ bool Foam::dpmCloud::writeObject
 
 void Foam::dpmCloud::save(const fileName& file) const
 {
-    const faultInjection::action fault = faultInjection::due("stateWrite");
-    if (fault == faultInjection::action::stop)
-    {
-        faultInjection::stop();
-    }
-    else if (fault == faultInjection::action::kill)
-    {
-        // Test only: leave what a kill in the middle of the DEM's write
-        // leaves, half its temporary file and no state
-        const fileName whole = file + ".fault";
-        dem_->setRunRecord(runRecord());
-        dem_->save(whole);
-        ::truncate(whole.c_str(), ::off_t(fileSize(whole)/2));
-        Foam::mv(whole, file + ".tmp");
-        faultInjection::kill();
-    }
+    faultInjection::at("stateWrite");
     // The write's own error (file, OS reason), not the settings' file
     try
     {
@@ -167,6 +151,7 @@ void Foam::dpmCloud::save(const fileName& file) const
             << "Cannot write the particle state: " << err.what()
             << exit(FatalError);
     }
+    faultInjection::at("stateWrite", "done");
 }
 
 

@@ -10,12 +10,10 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "faultInjection.H"
-#include "OSspecific.H"
-#include "OStringStream.H"
+#include "dem/WritePoints.hpp"
 
 #include <csignal>
 #include <cstdlib>
-#include <fstream>
 #include <map>
 #include <string>
 
@@ -24,11 +22,13 @@ License
 namespace
 {
 
+enum class action { none, kill, stop };
+
 struct faultSpec
 {
     std::string point;
     long n = 0;
-    Foam::faultInjection::action what = Foam::faultInjection::action::none;
+    action what = action::none;
 };
 
 //- DPMFOAM2D_FAULT parsed once
@@ -46,23 +46,38 @@ const faultSpec& spec()
         f.point = v.substr(0, c1);
         f.n = std::atol(v.substr(c1 + 1, c2 - c1 - 1).c_str());
         const std::string how = c2 == std::string::npos ? "" : v.substr(c2 + 1);
-        f.what = how == "stop"
-            ? Foam::faultInjection::action::stop
-            : Foam::faultInjection::action::kill;
+        f.what = how == "stop" ? action::stop : action::kill;
         return f;
     }();
     return s;
 }
 
 
-//- Written with the gas fields (AUTO_WRITE); acts when fieldWrite is due
-class fieldWriteFault
+//- Does the armed point start with prefix?
+bool armedUnder(const std::string& prefix)
+{
+    const faultSpec& f = spec();
+    return
+        f.what != action::none
+     && f.point.compare(0, prefix.size(), prefix) == 0;
+}
+
+
+//- The DEM state writer's hook (dem/WritePoints.hpp)
+void atDemPoint(const char* point)
+{
+    Foam::faultInjection::at(point);
+}
+
+
+//- Written with the gas fields (AUTO_WRITE): passes fieldWrite meanwhile
+class fieldWritePoint
 :
     public Foam::regIOobject
 {
 public:
 
-    fieldWriteFault(const Foam::fvMesh& mesh)
+    fieldWritePoint(const Foam::fvMesh& mesh)
     :
         regIOobject
         (
@@ -80,26 +95,7 @@ public:
         Foam::IOstream::compressionType, const bool
     ) const override
     {
-        using namespace Foam;
-        const faultInjection::action a = faultInjection::due("fieldWrite");
-        if (a == faultInjection::action::stop)
-        {
-            faultInjection::stop();
-        }
-        else if (a == faultInjection::action::kill)
-        {
-            // A half-written p_rgh, as a kill in the middle of it leaves
-            const regIOobject& p = db().lookupObject<regIOobject>("p_rgh");
-            OStringStream os;
-            p.writeHeader(os);
-            p.writeData(os);
-            const std::string text = os.str();
-            const fileName dir = time().timePath();
-            mkDir(dir);
-            std::ofstream(dir/"p_rgh", std::ios::trunc)
-                << text.substr(0, text.size()/2) << std::flush;
-            faultInjection::kill();
-        }
+        Foam::faultInjection::at("fieldWrite");
         return true;
     }
 
@@ -111,33 +107,36 @@ public:
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
-Foam::faultInjection::action Foam::faultInjection::due(const char* point)
+void Foam::faultInjection::at(const char* point, const char* stage)
 {
     const faultSpec& f = spec();
-    if (f.what == action::none || f.point != point) return action::none;
-    static std::map<std::string, long> calls;
-    return ++calls[point] == f.n ? f.what : action::none;
-}
-
-
-void Foam::faultInjection::kill()
-{
-    std::raise(SIGKILL);
-    std::abort();       // not reached
-}
-
-
-void Foam::faultInjection::stop()
-{
-    std::raise(SIGSTOP);
-}
-
-
-void Foam::faultInjection::watchFieldWrite(const fvMesh& mesh)
-{
-    if (spec().point == "fieldWrite")
+    if (f.what == action::none) return;
+    const std::string name =
+        stage ? std::string(point) + '.' + stage : std::string(point);
+    if (f.point != name) return;
+    static long calls = 0;
+    if (++calls != f.n) return;
+    if (f.what == action::stop)
     {
-        regIOobject::store(new fieldWriteFault(mesh));
+        std::raise(SIGSTOP);
+    }
+    else
+    {
+        std::raise(SIGKILL);
+        std::abort();       // not reached
+    }
+}
+
+
+void Foam::faultInjection::install(const fvMesh& mesh)
+{
+    if (armedUnder("fieldWrite"))
+    {
+        regIOobject::store(new fieldWritePoint(mesh));
+    }
+    if (armedUnder("stateWrite."))
+    {
+        dem::setWritePointHook(atDemPoint);
     }
 }
 

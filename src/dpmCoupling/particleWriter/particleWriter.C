@@ -55,7 +55,9 @@ bool writeDataset
 
 //- Write bytes to file as a whole: to file.partial, then renamed, so a
 //  kill or a full disk never leaves a part of it under its name. A write
-//  error stops the run naming the file and the system's reason.
+//  error stops the run naming the file and the system's reason. The fault
+//  points <faultPoint>, .part (half the bytes written) and .rename lie on
+//  the way (faultInjection.H).
 void writeWhole
 (
     const Foam::fileName& file,
@@ -65,8 +67,7 @@ void writeWhole
 )
 {
     using namespace Foam;
-    const faultInjection::action fault = faultInjection::due(faultPoint);
-    if (fault == faultInjection::action::stop) faultInjection::stop();
+    faultInjection::at(faultPoint);
 
     const fileName partial = file + ".partial";
     const auto failed = [&]()
@@ -80,26 +81,27 @@ void writeWhole
 
     const int fd = ::open(partial.c_str(), O_WRONLY|O_CREAT|O_TRUNC, 0666);
     if (fd < 0) failed();
-    if (fault == faultInjection::action::kill)
+    const auto writeAll = [&](size_t done, const size_t end)
     {
-        // Die with half the file written
-        if (::write(fd, data, size/2) >= 0) faultInjection::kill();
-    }
-    size_t done = 0;
-    while (done < size)
-    {
-        const ssize_t w = ::write(fd, data + done, size - done);
-        if (w < 0)
+        while (done < end)
         {
-            if (errno == EINTR) continue;
-            const int err = errno;
-            ::close(fd);
-            errno = err;
-            failed();
+            const ssize_t w = ::write(fd, data + done, end - done);
+            if (w < 0)
+            {
+                if (errno == EINTR) continue;
+                const int err = errno;
+                ::close(fd);
+                errno = err;
+                failed();
+            }
+            done += size_t(w);
         }
-        done += size_t(w);
-    }
+    };
+    writeAll(0, size/2);
+    faultInjection::at(faultPoint, "part");
+    writeAll(size/2, size);
     if (::close(fd) != 0) failed();
+    faultInjection::at(faultPoint, "rename");
     if (std::rename(partial.c_str(), file.c_str()) != 0) failed();
 }
 
