@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """results/ of a dpmStudy directory: one row per case, the ensembles over
 seeds with 95 % intervals, the paper's findings 2-4 as differences between
-ensembles, what each variant does to them (dpmStudyVerdicts) and the
+ensembles, what each variant does to them (study.verdicts) and the
 figures. Used by bin/dpmStudy (-results)."""
 
 import csv
@@ -14,11 +14,9 @@ from collections import OrderedDict
 
 import numpy as np
 
-import dpmEnsemble as ens
-import dpmStudyVerdicts
-from dpmParticleIO import read_postprocessing
-
-HERE = os.path.dirname(os.path.realpath(__file__))
+from .. import BIN_DIR
+from ..tables import read_postprocessing
+from . import ensemble as ens, verdicts
 PAPER_P = [1, 8, 16, 32, 64]
 
 # Columns of dpmBedStatistics' tables that the summary averages
@@ -136,7 +134,7 @@ def case_row(c, X, rate_window):
 
 def bed_statistics(case, X):
     """Means over the last X s of dpmBedStatistics' tables (run first)."""
-    r = subprocess.run([os.path.join(HERE, "dpmBedStatistics"), case],
+    r = subprocess.run([os.path.join(BIN_DIR, "dpmBedStatistics"), case],
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                        universal_newlines=True)
     if r.returncode != 0:
@@ -414,11 +412,11 @@ def remake_results(study_dir, out, X, rate_window, pictures):
     write_csv(os.path.join(out, "findings.csv"),
               [OrderedDict((k, v) for k, v in r.items() if k != "cases") for r in found])
     write_ensemble(out, ensemble, ewindows, found, X, rate_window)
-    effects = dpmStudyVerdicts.variant_effects(
+    effects = verdicts.variant_effects(
         found, groups_of([r for r in rows if r["finished"]]), BASELINE)
     write_csv(os.path.join(out, "verdicts.csv"), effects)
-    dpmStudyVerdicts.write_verdicts(out, effects, ens.LEVEL)
+    verdicts.write_verdicts(out, effects, ens.LEVEL)
     write_variants(out, cases)
     say("results: %s" % os.path.join(out, "summary.md"))
-    import dpmStudyFigures
-    dpmStudyFigures.figures(rows, ensemble, dirs, out, X, pictures)
+    from . import figures
+    figures.figures(rows, ensemble, dirs, out, X, pictures)
