@@ -1,9 +1,9 @@
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""The paper's study (Norouzi et al. 2012): small-particle mass fraction
-0.25 / 0.5 / 0.75 x operating pressure 1 / 8 / 16 / 32 / 64 bar, each case
-made from the template tutorials/paperStudy, run, and summed up; over
-several random packings (seeds) and with named variants of the model.
+"""A study of a template: small-particle mass fractions x operating
+pressures, each case made from the template (default tutorials/paperStudy,
+the paper's: Norouzi et al. 2012), run, and summed up; over several random
+packings (seeds) and with named variants of the model.
 
   dpmStudy [<studyDir>] [-w W ...] [-p P ...] [-seeds N | -seeds S1 S2 ...]
            [-variant NAME|FILE] [-j N] [-endTime T]
@@ -11,6 +11,12 @@ several random packings (seeds) and with named variants of the model.
            [-results] [-noPictures] [-scale S] [-settleTime T]
            [-writeInterval T] [-template DIR] [-listVariants]
            [-status] [-slurm [-- <sbatch options>]]
+
+The template's studyDict defines the study: the default matrix (-w, -p),
+the values allowed, and the findings that results/ tests (differences
+between two cells of the matrix, with their expected signs); the runner
+copies it into <studyDir>, whose copy -results then follows (a template
+whose studyDict differs later is refused for that study directory).
 
 <studyDir> (default ./paperStudy) gets
   beds/w0.50/           one packed and settled bed per mass fraction
@@ -28,10 +34,11 @@ several random packings (seeds) and with named variants of the model.
                         consecutive windows of X s), ensemble.md/.csv (per
                         variant, mass fraction and pressure: the mean over
                         seeds with its 95 % confidence interval),
-                        findings.md (the paper's findings 2-4 as
-                        differences between ensembles, with intervals, per
-                        variant), verdicts.md (what each variant does to
-                        findings 2-4 against the baseline's seeds: turns
+                        findings.md (the studyDict's findings, the
+                        paper's 2-4 for its template, as differences
+                        between ensembles, with intervals, per variant),
+                        verdicts.md (what each variant does to the
+                        findings against the baseline's seeds: turns
                         round, moves beyond the packings' scatter, or
                         not), variants.md (the edits of every variant
                         used), mixing_<p>bar.png (M(t) per pressure, the
@@ -103,15 +110,17 @@ import shutil
 import sys
 
 from .. import BIN_DIR, PROJECT_DIR
+from . import definition as study_definition
 from . import jobs as study_jobs, results as study_results, slurm as study_slurm
 from .jobs import Job, latest_complete_time, lock_holder, path_problem, running_in, take_lock
-from .variants import Variant, first_line_comment, foam_remove, foam_set, list_variants
+from .foam_edit import foam_remove, foam_set
+from .variants import Variant, first_line_comment, list_variants
 
-PAPER_W = [0.25, 0.5, 0.75]
-PAPER_P = [1, 8, 16, 32, 64]
-RUN_PRODUCTS = re.compile(r"^([0-9][0-9.eE+-]*|[0-9.]+\.incomplete(\.[0-9]+)?|particles|"
-                          r"postProcessing|images|log\..*|case\.foam|dynamicCode|\.dpmLock|"
-                          r"polyMesh|packedBed.*|variants)$")
+# What a case or bed does not take from the template: run products, and
+# the study's own files (its variants and studyDict)
+NOT_COPIED = re.compile(r"^([0-9][0-9.eE+-]*|[0-9.]+\.incomplete(\.[0-9]+)?|particles|"
+                        r"postProcessing|images|log\..*|case\.foam|dynamicCode|\.dpmLock|"
+                        r"polyMesh|packedBed.*|variants|studyDict)$")
 
 
 def say(*args):
@@ -130,7 +139,7 @@ def case_name(w, p, seed=None, variant=None):
 
 def copy_template(template, dest):
     shutil.copytree(template, dest,
-                    ignore=lambda d, names: [n for n in names if RUN_PRODUCTS.match(n)])
+                    ignore=lambda d, names: [n for n in names if NOT_COPIED.match(n)])
 
 
 class Study:
@@ -142,6 +151,7 @@ class Study:
         self.ws = args.w
         self.ps = args.p
         self.seeds = args.seeds or [None]
+        self.definition = args.definition
         self.here = BIN_DIR
         self.slurm_states = None     # squeue's view, read once when needed
         self.variant = Variant(args.variant, self.template) if args.variant else None
@@ -304,6 +314,7 @@ class Study:
         """Make the beds and cases not made yet; return the jobs still to
         run (beds, cases) and the Slurm ids of beds being packed there."""
         os.makedirs(self.dir, exist_ok=True)
+        self.record_definition()
         beds, bed_jobs, queued = {}, [], []
         for w in self.ws:
             for seed in self.seeds:
@@ -326,6 +337,23 @@ class Study:
                         say("%-16s finished (t = %g s)" % (os.path.basename(case),
                                                            self.end_time(case)))
         return bed_jobs, case_jobs, queued
+
+    def record_definition(self):
+        """The template's studyDict copied into the study directory (the
+        results follow the copy); a study made with another one is refused."""
+        path = os.path.join(self.dir, study_definition.FILE_NAME)
+        if not os.path.isfile(path):
+            tmp = "%s.tmp%d" % (path, os.getpid())
+            with open(tmp, "w") as f:
+                f.write(self.definition.text)
+            os.replace(tmp, path)
+            return
+        with open(path) as f:
+            if f.read() != self.definition.text:
+                sys.exit("dpmStudy: %s differs from the template's %s: the study was made "
+                         "with another matrix or other findings; remove %s to take the "
+                         "template's, or use another study directory"
+                         % (path, self.definition.path, path))
 
     def run(self):
         bed_jobs, case_jobs, queued = self.prepare()
@@ -366,10 +394,12 @@ def main():
                                  formatter_class=argparse.RawDescriptionHelpFormatter,
                                  epilog=__doc__.split("\n\n", 1)[1])
     ap.add_argument("studyDir", nargs="?", default="paperStudy")
-    ap.add_argument("-w", type=float, nargs="+", default=PAPER_W,
-                    help="small-particle mass fractions (default 0.25 0.5 0.75)")
-    ap.add_argument("-p", type=float, nargs="+", default=PAPER_P,
-                    help="pressures, bar (default 1 8 16 32 64)")
+    ap.add_argument("-w", type=float, nargs="+",
+                    help="small-particle mass fractions (default: the studyDict's; "
+                    "tutorials/paperStudy: 0.25 0.5 0.75)")
+    ap.add_argument("-p", type=float, nargs="+",
+                    help="pressures, bar (default: the studyDict's; tutorials/paperStudy: "
+                    "1 8 16 32 64)")
     ap.add_argument("-j", type=int, default=os.cpu_count() or 1,
                     help="cases at once (default: number of cores); with more "
                     "than one, their OpenMP threads wait passively "
@@ -423,7 +453,7 @@ def main():
             ap.error("-%s %g is outside (0, inf)" % (name, value))
     if args.scale is not None and not 0 < args.scale <= 1:
         ap.error("-scale %g is outside (0, 1]" % args.scale)
-    for p in args.p:
+    for p in args.p or []:
         if not 0 < p < float("inf"):
             ap.error("-p %g: a pressure (bar) must be > 0" % p)
     for what, path in (("the study directory", os.path.abspath(args.studyDir)),
@@ -436,15 +466,28 @@ def main():
             ap.error("-%s: no study directory %s" % (name, args.studyDir))
     if not os.path.isdir(args.template):
         ap.error("-template %s: no such directory" % args.template)
-    for w in args.w:
-        if w not in PAPER_W:
-            ap.error("-w %g: the paper's Table 3 has 0.25, 0.5 and 0.75" % w)
-    args.p = [int(p) if p == int(p) else p for p in args.p]
     if args.listVariants:
         template = os.path.realpath(args.template)
         for name in list_variants(template):
             say("%-14s %s" % (name, first_line_comment(os.path.join(template, "variants", name))))
         return
+    try:
+        # -results and -status: the study's own copy, if it has one
+        args.definition = study_results.definition_of(args.studyDir, args.template) \
+            if args.results or args.status else \
+            study_definition.of_template(os.path.realpath(args.template))
+    except study_definition.DefinitionError as e:
+        sys.exit("dpmStudy: %s" % e)
+    d = args.definition
+    args.w = args.w or d.w
+    args.p = args.p or d.p
+    for option, values, allowed, note in (("w", args.w, d.w_allowed, d.w_note),
+                                          ("p", args.p, d.p_allowed, d.p_note)):
+        for v in values:
+            if allowed is not None and v not in allowed:
+                ap.error("-%s %g: %s" % (option, v, note or "%s allows %s" % (
+                    d.path, " ".join("%g" % a for a in allowed))))
+    args.p = [int(p) if p == int(p) else p for p in args.p]
     if args.seeds is not None:
         if any(s < 1 for s in args.seeds):
             ap.error("-seeds %s: seeds are integers >= 1" % " ".join(map(str, args.seeds)))
@@ -465,7 +508,8 @@ def main():
     if not args.results:
         study.run()
     # results/ sums up every case of the study directory, not only those run now
-    study_results.results(study.dir, args.mean, args.rateWindow, not args.noPictures)
+    study_results.results(study.dir, args.mean, args.rateWindow, not args.noPictures,
+                          study_results.definition_of(study.dir, study.template))
 
 
 def command():
