@@ -22,11 +22,11 @@ Modules:
 import os
 
 from .particles import FIELDS, list_times, nearest_time, read as particles_at, read_particles
-from .tables import lacey, read_dat, read_postprocessing, segregation
+from .tables import lacey, read_dat, read_postprocessing, segregation, study_table
 from .fields import cell_geometry, internal_field, time_dirs
 
 __all__ = ["FIELDS", "list_times", "nearest_time", "particles_at", "read_particles", "lacey",
-           "read_dat", "read_postprocessing", "segregation", "cell_geometry",
+           "read_dat", "read_postprocessing", "segregation", "study_table", "cell_geometry",
            "internal_field", "time_dirs", "PROJECT_DIR", "BIN_DIR"]
 
 # The project's checkout (the package is its python/dpmfoam2d)

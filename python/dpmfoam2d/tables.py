@@ -3,12 +3,14 @@
 """The tables the function objects write, <case>/postProcessing/<name>/
 <startTime>/<file>: read one (read_dat) or a whole run's, joined over its
 restarts (read_postprocessing); the Lacey index and the segregation indices
-of the laceyIndex function object (lacey, segregation).
+of the laceyIndex function object (lacey, segregation); and the tables of a
+study's results/ (study_table).
 
 laceyIndex.dat    Time M ... (M: Lacey's index of the whole bed)
 segregation.dat   Time ... vertical horizontal hSmall hLarge rSmall rLarge
 """
 
+import csv
 import os
 import sys
 
@@ -154,3 +156,25 @@ def segregation(case, name="laceyIndex", postprocess=False):
     mean heights and distances from the centre line over time
     (segregation.dat); None if absent."""
     return read_postprocessing(case, name, "segregation.dat", postprocess)
+
+
+def study_table(study_dir, name="summary"):
+    """A table of a study's results, <study_dir>/results/<name>.csv
+    (summary, windows, ensemble, ensembleWindows, findings, verdicts), as a
+    dict column -> numpy array: numbers where every value of the column is
+    one (empty: nan), text otherwise. None if dpmStudy has not written it."""
+    path = os.path.join(study_dir, "results", name + ".csv")
+    if not os.path.isfile(path):
+        return None
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    if not rows:
+        return {}
+    out = {}
+    for i, column in enumerate(rows[0]):
+        values = [r[i] if i < len(r) else "" for r in rows[1:]]
+        try:
+            out[column] = np.array([float(v) if v != "" else np.nan for v in values])
+        except ValueError:
+            out[column] = np.array(values, dtype=object)
+    return out

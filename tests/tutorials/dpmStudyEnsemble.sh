@@ -168,5 +168,10 @@ text = open("mystudy/results/findings.md").read()
 assert text.startswith("My finding as differences") and \
     "Finding A: fewer small particles mix better at 0 < t <= 1 s." in text, text[:400]
 print("findings of the study's own studyDict:", [(r["variant"], r["finding"], r["comparison"]) for r in rows])
+import dpmfoam2d as dpm                 # the package's reader of results/ tables
+table = dpm.study_table("mystudy", "findings")
+assert list(table["finding"]) == ["A"] and abs(table["difference"][0] + 0.28) < 1e-9, table
+assert sorted(dpm.study_table("mystudy", "summary")["case"]) == sorted(
+    "w0.%d_1bar_seed%d" % (w, k) for w in (25, 75) for k in (1, 2, 3))
 PY
 pass "ensemble means, Student-t and Welch intervals, findings' signs as computed by hand; a template's own studyDict"
