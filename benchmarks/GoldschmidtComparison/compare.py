@@ -24,8 +24,6 @@ have at least MIN_STATS s of statistics.
 
 import argparse
 import glob
-import importlib.machinery
-import importlib.util
 import os
 import re
 import sys
@@ -33,15 +31,7 @@ import sys
 import numpy as np
 
 HERE = os.path.dirname(os.path.realpath(__file__))
-BIN = os.path.join(HERE, "..", "..", "bin")
-sys.path.insert(0, BIN)
-import dpmFoamFields as ff  # noqa: E402
-
-_loader = importlib.machinery.SourceFileLoader(
-    "dpmBedStatistics", os.path.join(BIN, "dpmBedStatistics"))
-_spec = importlib.util.spec_from_loader(_loader.name, _loader)
-bedStats = importlib.util.module_from_spec(_spec)
-_loader.exec_module(bedStats)
+from dpmfoam2d import bed_statistics as bedStats, fields as ff  # noqa: E402
 
 # The tutorial's spheres and gas (constant/kinematicCloudProperties,
 # transportProperties) and its box's depth and height (blockMeshDict); the

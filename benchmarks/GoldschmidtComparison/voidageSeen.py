@@ -27,14 +27,12 @@ import argparse
 import os
 import re
 import struct
-import sys
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.realpath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "bin"))
-import dpmFoamFields as ff      # noqa: E402
-import dpmParticleIO as pio     # noqa: E402
+from dpmfoam2d import fields as ff      # noqa: E402
+from dpmfoam2d import particles as pio     # noqa: E402
 import compare                  # noqa: E402
 
 U0 = 1.875                      # the tutorial's inlet (superficial), m/s

@@ -9,9 +9,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)),
-                                "..", "..", "bin"))
-import dpmParticleIO as pio  # noqa: E402
+from dpmfoam2d import particles as pio, tables  # noqa: E402
 
 BLOCK = 0.5     # s, the block of the block means
 T95 = {1: 12.71, 2: 4.30, 3: 3.18, 4: 2.78, 5: 2.57, 6: 2.45, 7: 2.36,
@@ -57,15 +55,15 @@ def probe(case):
 def series(case):
     out = {}
     out["pressure at the distributor [Pa]"] = probe(case)
-    m = pio.read_postprocessing(case, "laceyIndex", "laceyIndex.dat", quiet=True)
+    m = tables.read_postprocessing(case, "laceyIndex", "laceyIndex.dat", quiet=True)
     out["Lacey's M"] = (m["Time"], m["M"])
-    bed = pio.read_dat(os.path.join(case, "postProcessing", "bedStatistics",
+    bed = tables.read_dat(os.path.join(case, "postProcessing", "bedStatistics",
                                     "0", "bed.dat"))
     for k, name in (("bedHeight", "bed height [m]"),
                     ("bubbleFraction", "bubble fraction"),
                     ("emulsionVoidage", "emulsion voidage")):
         out[name] = (bed["Time"], bed[k])
-    part = pio.read_dat(os.path.join(case, "postProcessing", "bedStatistics",
+    part = tables.read_dat(os.path.join(case, "postProcessing", "bedStatistics",
                                       "0", "particles.dat"))
     for k, name in (("speedRmsSmall", "rms speed, small [m/s]"),
                     ("speedRmsLarge", "rms speed, large [m/s]")):

@@ -14,15 +14,13 @@ pressure probe and bed height, and the experiment's digitized curves.
 """
 
 import os
-import sys
 
 import numpy as np
 import h5py
 
 HERE = os.path.dirname(os.path.realpath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "bin"))
-import dpmParticleIO as pio  # noqa: E402
-from dpmFoamFields import TIME_NAME  # noqa: E402
+from dpmfoam2d import particles as pio  # noqa: E402
+from dpmfoam2d.fields import TIME_NAME  # noqa: E402
 
 PROBE_NAME, PROBE_FIELD = "pressureProbe", "p_rgh"
 

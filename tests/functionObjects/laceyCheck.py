@@ -26,8 +26,10 @@ import math
 import os
 import sys
 
-import h5py
 import numpy as np
+
+from dpmfoam2d import particles as pio
+from dpmfoam2d.tables import read_dat
 
 REL = 1e-5          # means, M, S2, S02, SR2: relative
 ABS_INDEX = 1e-5    # vertical, horizontal: absolute
@@ -37,18 +39,12 @@ LACEY_COLUMNS = ["M", "S2", "S02", "SR2", "nCells"]
 SEG_COLUMNS = ["hSmall", "hLarge", "vertical", "rSmall", "rLarge", "horizontal"]
 
 
-def read_dat(path):
-    """Rows of a writeFile table: {time name: [values]}, and the column names
-    (the last comment line before the data)."""
-    rows, columns = {}, None
-    for line in open(path):
-        if line.startswith("#"):
-            columns = line[1:].split()
-            continue
-        if line.strip():
-            fields = line.split()
-            rows[fields[0]] = [float(v) for v in fields[1:]]
-    return columns, rows
+def table_rows(path):
+    """The column names of a writeFile table and its rows, {time: [values]}."""
+    table = read_dat(path)
+    columns = list(table)
+    return columns, {t: [table[c][i] for c in columns[1:]]
+                     for i, t in enumerate(table[columns[0]])}
 
 
 def lacey(x, y, small, w, region, h, basis):
@@ -90,18 +86,18 @@ def close(a, b, absolute=False):
 
 
 def check_particles(dat_dir, h, basis, region):
-    _, lacey_rows = read_dat(os.path.join(dat_dir, "laceyIndex.dat"))
-    _, seg_rows = read_dat(os.path.join(dat_dir, "segregation.dat"))
+    _, lacey_rows = table_rows(os.path.join(dat_dir, "laceyIndex.dat"))
+    _, seg_rows = table_rows(os.path.join(dat_dir, "segregation.dat"))
+    files = pio.list_times(".")
     assert lacey_rows, "no rows in " + dat_dir
     x0, y0, x1, y1 = region
     checked = 0
     for t, row in lacey_rows.items():
-        path = os.path.join("particles", t + ".h5")
-        if not os.path.exists(path):
+        path = [f for tf, f in files if abs(tf - t) <= 1e-9 * max(1.0, abs(t))]
+        if not path:
             continue
-        with h5py.File(path, "r") as f:
-            pos = f["position"][:].astype(float)
-            d = f["diameter"][:]
+        p = pio.read_particles(path[0])
+        pos, d = p["position"].astype(float), p["diameter"]
         small = d < 0.5 * (d.min() + d.max())
         w = (float(d.max()) / float(d.min())) ** 3
         x, y = pos[:, 0], pos[:, 1]
@@ -114,7 +110,7 @@ def check_particles(dat_dir, h, basis, region):
         near = [i for i in range(len(x))
                 if np.min(np.abs(lines_x - x[i])) < EDGE
                 or np.min(np.abs(lines_y - y[i])) < EDGE]
-        assert len(near) <= 6, f"{t}: {len(near)} particles on edges"
+        assert len(near) <= 6, f"{t:g}: {len(near)} particles on edges"
         shifts = []
         for i in near:
             ex = lines_x[np.argmin(np.abs(lines_x - x[i]))]
@@ -145,12 +141,12 @@ def check_particles(dat_dir, h, basis, region):
             if good:
                 ok, best = True, (L, S)
                 break
-        print(f"  t = {t}: M {row[0]:.10g} (python {best[0][0]:.10g}), "
+        print(f"  t = {t:g}: M {row[0]:.10g} (python {best[0][0]:.10g}), "
               f"nCells {int(row[4])} ({best[0][4]}), vertical {seg_rows[t][2]:.6g} "
               f"({best[1][2]:.6g}), horizontal {seg_rows[t][5]:.6g} ({best[1][5]:.6g})"
               f"{', %d particle(s) on edges' % len(near) if near else ''}")
         if not ok:
-            print(f"FAIL {dat_dir} t = {t}:\n  file   {row} {seg_rows[t]}\n"
+            print(f"FAIL {dat_dir} t = {t:g}:\n  file   {row} {seg_rows[t]}\n"
                   f"  python {best[0]} {best[1]}")
             return False
         checked += 1
@@ -160,15 +156,15 @@ def check_particles(dat_dir, h, basis, region):
 
 def check_same(dir_a, dir_b, rel):
     for name in ("laceyIndex.dat", "segregation.dat"):
-        cols_a, a = read_dat(os.path.join(dir_a, name))
-        cols_b, b = read_dat(os.path.join(dir_b, name))
+        cols_a, a = table_rows(os.path.join(dir_a, name))
+        cols_b, b = table_rows(os.path.join(dir_b, name))
         assert cols_a == cols_b, (cols_a, cols_b)
         assert len(b) >= 2, f"{dir_b}/{name}: {len(b)} rows"
         for t, row in b.items():
-            assert t in a, f"time {t} of {dir_b} not in {dir_a}"
+            assert t in a, f"time {t:g} of {dir_b} not in {dir_a}"
             for c, u, v in zip(cols_a[1:], a[t], row):
                 if not abs(u - v) <= rel * abs(u):
-                    print(f"FAIL {name} t = {t} {c}: run {u!r}, postProcess {v!r}")
+                    print(f"FAIL {name} t = {t:g} {c}: run {u!r}, postProcess {v!r}")
                     return False
         print(f"  {dir_b}/{name}: {len(b)} rows equal the run's "
               f"(relative tolerance {rel:g})")

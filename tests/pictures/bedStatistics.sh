@@ -16,10 +16,9 @@
 . "$testsDir/pictures/pictureFunctions"
 
 makeParticleCase "$workDir/bed" 1.5 1.6
-/usr/bin/python3 - "$workDir/bed" "$testsDir/../bin" <<'PY' || fail "setting particle velocities"
+/usr/bin/python3 - "$workDir/bed" <<'PY' || fail "setting particle velocities"
 import sys, numpy as np
-sys.path.insert(0, sys.argv[2])
-import dpmParticleIO as pio
+from dpmfoam2d import particles as pio, tables
 case = sys.argv[1]
 for t, path in pio.list_times(case):
     p = pio.read_particles(path)
@@ -35,13 +34,12 @@ PY
 dpmBedStatistics "$workDir/bed" -report >log.dpmBedStatistics 2>&1 \
     || { cat log.dpmBedStatistics; fail "dpmBedStatistics failed"; }
 cat log.dpmBedStatistics
-/usr/bin/python3 - "$workDir/bed" "$testsDir/../bin" <<'PY' || fail "bed statistics"
+/usr/bin/python3 - "$workDir/bed" <<'PY' || fail "bed statistics"
 import sys, numpy as np
-sys.path.insert(0, sys.argv[2])
-import dpmParticleIO as pio
+from dpmfoam2d import particles as pio, tables
 case = sys.argv[1]
-bed = pio.read_postprocessing(case, "bedStatistics", "bed.dat")
-par = pio.read_postprocessing(case, "bedStatistics", "particles.dat")
+bed = tables.read_postprocessing(case, "bedStatistics", "bed.dat")
+par = tables.read_postprocessing(case, "bedStatistics", "particles.dat")
 assert list(bed["Time"]) == [1.5, 1.6], bed["Time"]
 assert list(par["Time"]) == [1.5, 1.6], par["Time"]
 dx = 0.0075

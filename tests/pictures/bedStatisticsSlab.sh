@@ -62,11 +62,10 @@ do
 done
 cat log.dpmBedStatistics.0.03 postProcessing/bedStatistics/0/*.dat
 
-py - "$testsDir/../bin" <<'PY' || fail "slab bed statistics"
+py - <<'PY' || fail "slab bed statistics"
 import sys, numpy as np
-sys.path.insert(0, sys.argv[1])
-import dpmParticleIO as pio
-bed = pio.read_postprocessing(".", "bedStatistics", "bed.dat")
+from dpmfoam2d import particles as pio, tables
+bed = tables.read_postprocessing(".", "bedStatistics", "bed.dat")
 t = np.atleast_1d(bed["Time"])
 k = int(np.argmin(np.abs(t - 0.002)))
 assert abs(t[k] - 0.002) < 1e-12, t

@@ -5,22 +5,20 @@
 
   countClassPixels.py <png> <particles.h5> <relTol>
 
-Counts the pixels of each class colour (bin/dpmPictureTools.CLASS_COLOURS,
+Counts the pixels of each class colour (dpmfoam2d.pictures.tools.CLASS_COLOURS,
 within 2/255 per channel: the discs are drawn unlit, so they are exact).
 Expected ratio small/large pixels = sum over small of d^2 / sum over large
 of d^2 (areas of the discs drawn, none overlapping or cut in the test data).
 Passes when |measured/expected - 1| <= relTol; prints both.
 """
 
-import os
 import sys
 
 import numpy as np
 import matplotlib.image as mpimg
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "bin"))
-import dpmParticleIO as pio  # noqa: E402
-from dpmPictureTools import CLASS_COLOURS  # noqa: E402
+from dpmfoam2d import particles as pio
+from dpmfoam2d.pictures.tools import CLASS_COLOURS
 
 png, h5, relTol = sys.argv[1], sys.argv[2], float(sys.argv[3])
 img = mpimg.imread(png)[:, :, :3]

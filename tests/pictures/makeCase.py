@@ -32,9 +32,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "bin"))
-import dpmParticleIO as pio  # noqa: E402
+from dpmfoam2d import particles as pio
 
 NX, NY, DX = 20, 120, 0.0075
 

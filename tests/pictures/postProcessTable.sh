@@ -29,15 +29,14 @@ check()     # <expected run times> <expected -postProcess times>
     py - "$1" "$2" <<'PY'
 import sys, os
 import numpy as np
-sys.path.insert(0, os.path.join(os.environ["DPMFOAM2D_PROJECT"], "bin"))
-import dpmParticleIO as pio
+from dpmfoam2d import particles as pio, tables
 run = [float(t) for t in sys.argv[1].split()]
 pp = [float(t) for t in sys.argv[2].split()]
 for fname in ("laceyIndex.dat", "segregation.dat"):
-    t = pio.read_postprocessing(".", "laceyIndex", fname)["Time"]
+    t = tables.read_postprocessing(".", "laceyIndex", fname)["Time"]
     print(fname, "run:", " ".join("%g" % v for v in t))
     assert np.allclose(t, run) and np.all(np.diff(t) > 0), (t, run)
-    t = pio.read_postprocessing(".", "laceyIndex", fname, postprocess=True)["Time"]
+    t = tables.read_postprocessing(".", "laceyIndex", fname, postprocess=True)["Time"]
     print(fname, "-postProcess:", " ".join("%g" % v for v in t))
     assert np.allclose(t, pp), (t, pp)
 PY

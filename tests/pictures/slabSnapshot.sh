@@ -32,8 +32,7 @@ dpmSnapshot "$workDir/bed" -time 1.5 -o "$workDir/slab.png" >log.dpmSnapshot 2>&
 import os, sys
 import numpy as np
 import matplotlib.image as mpimg
-sys.path.insert(0, os.path.join(os.environ["DPMFOAM2D_PROJECT"], "bin"))
-from dpmPictureTools import CLASS_COLOURS
+from dpmfoam2d.pictures.tools import CLASS_COLOURS
 img = mpimg.imread(sys.argv[1])[:, :, :3]
 n = {c: int(np.all(np.abs(img - np.array(col)) <= 2.0 / 255, axis=2).sum())
      for c, col in CLASS_COLOURS.items()}

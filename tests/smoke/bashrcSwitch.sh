@@ -33,7 +33,9 @@ for d in "$(app "$a")" "$a/bin"; do
     [ "$(count "$PATH" "$d")" = 1 ] || fail "a's $d is in PATH $(count "$PATH" "$d") times, not once"
 done
 [ "$(count "$LD_LIBRARY_PATH" "$(lib "$a")")" = 1 ] || fail "a's library directory is not in LD_LIBRARY_PATH once"
+[ "$(count "$PYTHONPATH" "$b/python")" = 0 ] || fail "b's Python package $b/python is still in PYTHONPATH"
+[ "$(first "$PYTHONPATH" /python)" = "$a/python" ] || fail "a's Python package $a/python is not first in PYTHONPATH"
 "$a/etc/checkEnvironment" -quiet || fail "checkEnvironment refuses a's environment"
 LD_LIBRARY_PATH="$(lib "$b"):$LD_LIBRARY_PATH" "$a/etc/checkEnvironment" -quiet 2>/dev/null \
     && fail "checkEnvironment passes with b's libraries first"
-pass "sourcing a, b, then a again leaves a's directories first, once, and none of b's; checkEnvironment refuses another build's libraries first"
+pass "sourcing a, b, then a again leaves a's directories (PATH, LD_LIBRARY_PATH, PYTHONPATH) first, once, and none of b's; checkEnvironment refuses another build's libraries first"

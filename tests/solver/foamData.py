@@ -1,14 +1,11 @@
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Small helpers for the solver tests: OpenFOAM fields (the project's own
-reader, bin/dpmFoamFields.py: ASCII or binary) and correlations."""
-import os
-import sys
+reader, dpmfoam2d.fields: ASCII or binary) and correlations."""
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "bin"))
-from dpmFoamFields import internal_field  # noqa: E402,F401  (used by the tests)
+from dpmfoam2d.fields import internal_field  # noqa: F401  (used by the tests)
 
 
 def wen_yu_umf(d, rho_p, rho_g, mu=1.75e-5, g=9.81):

@@ -170,8 +170,7 @@ done
 # the log's end (a 60-s case's log holds ~200 MB)
 py - <<PY || fail "-status: the last Progress line of a log"
 import sys
-sys.path.insert(0, "$DPMFOAM2D_PROJECT/bin")
-from dpmStudySlurm import last_progress
+from dpmfoam2d.study.slurm import last_progress
 with open("fake.log", "w") as f:
     f.write("Progress: t = 1 s (2%), 40 wall s per simulated s, ETA 2360 s\n")
     f.write(("x" * 99 + "\n") * 30000)

@@ -15,7 +15,9 @@
 #     without an interval, what a variant does to each finding against the
 #     baseline's seeds (the shift's interval, a one-seed case taking the
 #     baseline's scatter; a three-seed variant that turns findings 3, 4 round), a case without a seed suffix counted alone, a
-#     case that has not reached its end time left out of the ensemble.
+#     case that has not reached its end time left out of the ensemble;
+#   - a template of one's own with its studyDict: its allowed mass
+#     fractions and its findings.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 cd "$workDir" || fail "cd"
@@ -128,4 +130,48 @@ for f in mixing_1bar.png mixing_upwind_1bar.png indices.png upwind_indices.png h
 do
     [ -s "study/results/$f" ] || fail "no results/$f"
 done
-pass "ensemble means, Student-t and Welch intervals, findings' signs as computed by hand"
+# A template of one's own brings its own study: its studyDict's matrix
+# limits -w (with its note), its findings are the ones findings.csv tests
+# (here one: w 0.75 - w 0.25 of the final M at each pressure, sign -: the
+# hand-made values give 0.22 - 0.5 = -0.28 at 1 bar, as above), and the
+# study directory's copy of a studyDict is the one -results follows
+cp -r "$testsDir/../tutorials/paperStudy" mine || fail "copy the template"
+cat > mine/studyDict <<'DICT'
+massFractions { values (0.25 0.75); allowed (0.25 0.75); allowedNote "my bed has 0.25 and 0.75"; }
+pressures { values (1); }
+findingsTitle "My finding";
+findingsNotes { A "fewer small particles mix better at {rateWindow}"; }
+findings
+{
+    fractions
+    {
+        each pressure;
+        contrasts { m { finding A; comparison "final M, w 0.75 - w 0.25, {pressure} bar"; quantity Mmean; a 0.75; b 0.25; sign -; } }
+    }
+}
+DICT
+mkdir mystudy && cp -r study/w0.25_1bar_seed? study/w0.75_1bar_seed? mystudy/ || fail "copy the cases"
+dpmStudy mystudy -w 0.5 -template mine > log.mineW 2>&1 && fail "-w 0.5 ran against the template's allowed values"
+grep -q "error: -w 0.5: my bed has 0.25 and 0.75" log.mineW || { cat log.mineW; fail "no message with the template's note"; }
+# the study directory's copy (as dpmStudy makes it) wins over -template's default
+cp mine/studyDict mystudy/studyDict
+dpmStudy mystudy -results -noPictures -mean 1 > log.mine 2>&1 \
+    || { cat log.mine; fail "dpmStudy -results on a study with its own studyDict"; }
+py - <<'PY' || fail "the template's own findings"
+import csv
+rows = list(csv.DictReader(open("mystudy/results/findings.csv")))
+base = [r for r in rows if r["variant"] == "baseline"]
+assert [(r["finding"], r["comparison"], r["paperSign"]) for r in base] == \
+    [("A", "final M, w 0.75 - w 0.25, 1 bar", "-")], base
+assert abs(float(base[0]["difference"]) + 0.28) < 1e-9 and base[0]["verdict"] == "as the paper", base
+text = open("mystudy/results/findings.md").read()
+assert text.startswith("My finding as differences") and \
+    "Finding A: fewer small particles mix better at 0 < t <= 1 s." in text, text[:400]
+print("findings of the study's own studyDict:", [(r["variant"], r["finding"], r["comparison"]) for r in rows])
+import dpmfoam2d as dpm                 # the package's reader of results/ tables
+table = dpm.study_table("mystudy", "findings")
+assert list(table["finding"]) == ["A"] and abs(table["difference"][0] + 0.28) < 1e-9, table
+assert sorted(dpm.study_table("mystudy", "summary")["case"]) == sorted(
+    "w0.%d_1bar_seed%d" % (w, k) for w in (25, 75) for k in (1, 2, 3))
+PY
+pass "ensemble means, Student-t and Welch intervals, findings' signs as computed by hand; a template's own studyDict"

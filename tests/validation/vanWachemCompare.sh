@@ -26,8 +26,7 @@ cd "$workDir" || fail "work directory"
 py - <<'PY' || fail "synthetic records"
 import os, sys
 import numpy as np
-sys.path.insert(0, os.path.join(os.environ["DPMFOAM2D_PROJECT"], "bin"))
-import dpmParticleIO as pio
+from dpmfoam2d import particles as pio, tables
 two_pi = 2 * np.pi
 os.makedirs("experiment")
 t = np.arange(3.0, 6.0 + 1e-9, 1e-3)

@@ -151,7 +151,7 @@ void Foam::functionObjects::laceyIndex::createFiles()
     );
 
     // A table of -postProcess says so: readers keep it apart from the run's
-    // (bin/dpmParticleIO.py read_postprocessing)
+    // (dpmfoam2d.tables.read_postprocessing)
     const char* recomputed =
         "recomputed after the run (dpmFoam2D -postProcess) at the saved times";
 

@@ -14,10 +14,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-import dpmEnsemble as ens  # noqa: E402
-from dpmParticleIO import read_postprocessing  # noqa: E402
-
-HERE = os.path.dirname(os.path.realpath(__file__))
+from .. import BIN_DIR  # noqa: E402
+from ..tables import read_postprocessing  # noqa: E402
+from . import ensemble as ens  # noqa: E402
 BASELINE = "baseline"
 
 
@@ -153,7 +152,7 @@ def snapshots(rows, groups, dirs, out):
                     continue
                 first = groups[variant, w, p][0]
                 png = os.path.join(snaps, first["case"] + ".png")
-                subprocess.run([os.path.join(HERE, "dpmSnapshot"), dirs[first["case"]],
+                subprocess.run([os.path.join(BIN_DIR, "dpmSnapshot"), dirs[first["case"]],
                                 "-o", png, "-height", "700"], check=True,
                                stdout=subprocess.DEVNULL)
                 ax.imshow(plt.imread(png))

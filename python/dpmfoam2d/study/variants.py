@@ -1,36 +1,18 @@
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The variants of bin/dpmStudy (-variant): named sets of dictionary edits
-applied to a study's beds and cases, checked against the template; and the
-foamDictionary edits they and the study's settings make."""
+applied to a study's beds and cases, checked against the template (the
+edits themselves: study.foam_edit)."""
 
 import os
 import re
 import subprocess
 import sys
 
+from .foam_edit import foam_remove, foam_set
+
 
 VARIANT_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9.-]*$")
-
-
-def foam_set(dict_file, entry, value):
-    subprocess.run(["foamDictionary", "-entry", entry, "-set", str(value),
-                    dict_file], check=True, stdout=subprocess.DEVNULL)
-
-
-def foam_remove(dict_file, entry):
-    """Remove entry if the dictionary has it."""
-    r = subprocess.run(["foamDictionary", "-entry", entry, dict_file],
-                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    if r.returncode == 0:
-        subprocess.run(["foamDictionary", "-entry", entry, "-remove", dict_file],
-                       check=True, stdout=subprocess.DEVNULL)
-
-
-def foam_get(dict_file, entry):
-    r = subprocess.run(["foamDictionary", "-entry", entry, "-value", dict_file],
-                       check=True, stdout=subprocess.PIPE, text=True)
-    return r.stdout.strip()
 
 
 class Variant:

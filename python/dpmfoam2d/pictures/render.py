@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Renders dpmFoam2D snapshots off-screen (run by dpmSnapshot and dpmMovie).
 
-    dpmPvbatch dpmRender.py --case C --times T1 [T2 ...] \
+    dpmPvbatch render.py --case C --times T1 [T2 ...] \
         --out F1.png [F2.png ...] [--height PX] [--full]
 
 For each particle time Ti: the gas voidage of the nearest gas time (OpenFOAM
@@ -22,15 +22,14 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import dpmParticleIO as pio  # noqa: E402
+from dpmfoam2d import particles as pio  # noqa: E402
 
 import paraview.simple as ps  # noqa: E402
 from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkPoints  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData  # noqa: E402
 
-from dpmPictureTools import CLASS_COLOURS, CLASS_NAMES  # noqa: E402
+from dpmfoam2d.pictures.tools import CLASS_COLOURS, CLASS_NAMES  # noqa: E402
 DISC_SIDES = 32
 VOIDAGE_RANGE = (0.35, 1.0)
 
@@ -70,7 +69,7 @@ def main():
                     help="show the whole column, not just the bed")
     args = ap.parse_args()
     if len(args.out) != len(args.times):
-        sys.exit("dpmRender: as many --out as --times are needed")
+        sys.exit("render.py: as many --out as --times are needed")
     case = os.path.abspath(args.case)
     # One pass for the extent of the particles over all frames (the window),
     # keeping only numbers; each frame is read again when drawn.
@@ -132,7 +131,7 @@ def main():
             bar.ScalarBarLength = 0.3
             bar.Visibility = 1
         else:
-            print("dpmRender: no voidage field in %s; the mesh is white" % case)
+            print("render.py: no voidage field in %s; the mesh is white" % case)
             gd.ColorArrayName = ["POINTS", ""]
             gd.AmbientColor = gd.DiffuseColor = [1, 1, 1]
 
@@ -140,9 +139,9 @@ def main():
     if gas is not None:
         bx0, bx1, by0, by1 = bounds[0], bounds[1], bounds[2], bounds[3]
     else:
-        print("dpmRender: no mesh in %s/constant/polyMesh; particles only" % case)
+        print("render.py: no mesh in %s/constant/polyMesh; particles only" % case)
         if top is None:
-            sys.exit("dpmRender: neither a mesh nor particles to show in %s" % case)
+            sys.exit("render.py: neither a mesh nor particles to show in %s" % case)
         bx0, bx1, by0, by1 = lo[0], hi[0], lo[1], hi[1]
     y1 = by1 if (args.full or top is None) else min(by1, top + max(0.25 * (top - by0), 0.01))
     W, H = bx1 - bx0, y1 - by0
@@ -226,7 +225,7 @@ def main():
         os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
         ps.SaveScreenshot(out, view, ImageResolution=[width, height],
                           TransparentBackground=0)
-        print("dpmRender: %s (particles t = %g, %d particles, %dx%d px)"
+        print("render.py: %s (particles t = %g, %d particles, %dx%d px)"
               % (out, p["time"], len(d), width, height))
 
 

@@ -5,7 +5,7 @@ the paper's findings 2-4, judged against the baseline's seeds.
 
 For every contrast of findings.md that a variant and the baseline both
 have: the variant's value, its shift from the baseline's with an interval
-(dpmEnsemble.shift_ci: a one-seed variant case takes the baseline's
+(ensemble.shift_ci: a one-seed variant case takes the baseline's
 scatter of the same case), and the effect: turns the finding round (its
 sign becomes the paper's where the baseline's is the reverse), moves it
 toward or away from the paper beyond the packings' scatter, or leaves it
@@ -15,7 +15,7 @@ the table the verdicts of docs/reproduction.md rest on."""
 import os
 from collections import OrderedDict
 
-import dpmEnsemble as ens
+from . import ensemble as ens
 
 
 def opposite(sign):
@@ -24,7 +24,7 @@ def opposite(sign):
 
 def effect(paper, base_sign, var_sign, shift_sign):
     """The variant's effect on one contrast, from the signs (as
-    dpmEnsemble.sign_of gives them) of the baseline's contrast, the
+    ensemble.sign_of gives them) of the baseline's contrast, the
     variant's and the shift between them. A one-seed sign counts only
     where the shift leaves the baseline's scatter."""
     one_seed = var_sign.endswith("?")

@@ -14,7 +14,7 @@ import subprocess
 import sys
 import time
 
-from dpmFoamFields import time_dirs
+from ..fields import time_dirs
 
 
 PROGRESS = re.compile(r"Progress: t = (\S+) s \((\d+)%\), (\S+) wall s per "

@@ -11,7 +11,7 @@ import tempfile
 import time
 
 HERE = os.path.dirname(os.path.realpath(__file__))
-RENDER = os.path.join(HERE, "dpmRender.py")
+RENDER = os.path.join(HERE, "render.py")
 
 # Class colours (RGB 0-1), drawn unlit: ColorBrewer red for small (class 0),
 # blue for large (class 1). The renderer and the tests take them from here.

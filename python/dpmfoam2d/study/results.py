@@ -1,9 +1,10 @@
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
 """results/ of a dpmStudy directory: one row per case, the ensembles over
-seeds with 95 % intervals, the paper's findings 2-4 as differences between
-ensembles, what each variant does to them (dpmStudyVerdicts) and the
-figures. Used by bin/dpmStudy (-results)."""
+seeds with 95 % intervals, the findings of the study's studyDict
+(study.definition) as differences between ensembles, what each variant
+does to them (study.verdicts) and the figures. Used by bin/dpmStudy
+(-results)."""
 
 import csv
 import fcntl
@@ -14,13 +15,9 @@ from collections import OrderedDict
 
 import numpy as np
 
-import dpmEnsemble as ens
-import dpmStudyVerdicts
-from dpmParticleIO import read_postprocessing
-
-HERE = os.path.dirname(os.path.realpath(__file__))
-PAPER_P = [1, 8, 16, 32, 64]
-
+from .. import BIN_DIR
+from ..tables import read_postprocessing
+from . import definition as study_definition, ensemble as ens, verdicts
 # Columns of dpmBedStatistics' tables that the summary averages
 BED_STATISTICS = ("bedHeight", "bubbleFraction", "emulsionVoidage", "speedRmsSmall",
                   "speedRmsLarge", "stillSmall", "stillLarge", "voidageSmall",
@@ -136,7 +133,7 @@ def case_row(c, X, rate_window):
 
 def bed_statistics(case, X):
     """Means over the last X s of dpmBedStatistics' tables (run first)."""
-    r = subprocess.run([os.path.join(HERE, "dpmBedStatistics"), case],
+    r = subprocess.run([os.path.join(BIN_DIR, "dpmBedStatistics"), case],
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                        universal_newlines=True)
     if r.returncode != 0:
@@ -180,37 +177,15 @@ def ensembles(rows):
     return out
 
 
-# The paper's findings 2-4 as differences of ensembles: (finding, what,
-# quantity, case a, case b, the paper's sign of a - b). Cases are (w, p);
-# None stands for "each" value present.
-def finding_contrasts(group_keys, variant):
-    have = {(w, p) for v, w, p in group_keys if v == variant}
-    ps = sorted({p for w, p in have})
-    ws = sorted({w for w, p in have})
-    out = []
-    for w in ws:
-        if (w, 1) in have and (w, 64) in have:
-            out.append(("2", "final M, 64 - 1 bar, w %g" % w, "Mmean", (w, 64), (w, 1), "+"))
-        if (w, 64) in have:
-            out.append(("2", "horizontal index at 64 bar, w %g" % w, "horizontal",
-                        (w, 64), None, "+"))
-    for p in ps:
-        if (0.75, p) in have and (0.25, p) in have:
-            out.append(("3", "final M, w 0.75 - w 0.25, %g bar" % p, "Mmean",
-                        (0.75, p), (0.25, p), "+"))
-            out.append(("4", "M/M(0) in the rate window, w 0.75 - w 0.25, %g bar" % p,
-                        "Mrate", (0.75, p), (0.25, p), "+"))
-    return out
-
-
-def findings(rows):
-    """Rows of findings.md/csv: each contrast of each variant with its
-    difference, interval and sign."""
+def findings(rows, definition):
+    """Rows of findings.md/csv: each contrast of the study's definition,
+    for each variant, with its difference, interval and sign."""
     g = groups_of([r for r in rows if r["finished"]])     # running cases left out
     out = []
     variants = list(OrderedDict.fromkeys(r["variant"] for r in rows if r["finished"]))
     for v in variants:
-        for finding, what, k, a, b, paper in finding_contrasts(g.keys(), v):
+        have = {(w, p) for variant, w, p in g.keys() if variant == v}
+        for finding, what, k, a, b, paper in definition.contrasts(have):
             A = [r[k] for r in g[(v,) + a]]
             if b is None:
                 diff, half, na = ens.mean_ci(A)
@@ -302,7 +277,7 @@ def ensemble_windows(windows):
             for (v, w, p, a, b), Ms in g.items()]
 
 
-def write_ensemble(out, ensemble, ewindows, found, X, rate_window):
+def write_ensemble(out, ensemble, ewindows, found, X, rate_window, definition):
     lvl = int(round(ens.LEVEL * 100))
     t0, t1 = rate_window or (0.0, X)
     with open(os.path.join(out, "ensemble.md"), "w") as f:
@@ -336,14 +311,11 @@ def write_ensemble(out, ensemble, ewindows, found, X, rate_window):
                 f.write("| %s | %.2f | %g | " % key +
                         " | ".join(cell.get(e, "-") for e in edges) + " |\n")
     with open(os.path.join(out, "findings.md"), "w") as f:
-        f.write("The paper's findings 2-4 as differences between ensembles (a - b, mean "
-                "over seeds, +- Welch's %d %% interval; for the horizontal index its "
-                "mean and interval). A sign is called only where the interval excludes "
-                "zero; one seed gives a sign without an interval (screening only).\n"
-                "Finding 2: higher pressure mixes better (final M higher at 64 bar), "
-                "horizontal segregation at 64 bar. Finding 3: at 1 bar the final M rises "
-                "with w_small. Finding 4: more small particles segregate more slowly "
-                "(higher M/M(0) over %g < t <= %g s).\n\n" % (lvl, t0, t1))
+        f.write("%s as differences between ensembles (a - b, mean over seeds, +- "
+                "Welch's %d %% interval; for a contrast without b its mean and interval). "
+                "A sign is called only where the interval excludes zero; one seed gives a "
+                "sign without an interval (screening only).\n%s\n\n"
+                % (definition.findings_title, lvl, definition.notes((t0, t1))))
         f.write("| variant | finding | comparison | paper | ours | n (a, b) | sign "
                 "| verdict |\n")
         f.write("|" + "---|" * 8 + "\n")
@@ -372,8 +344,18 @@ def write_variants(out, cases):
                     % (name, case, text if text.endswith("\n") else text + "\n"))
 
 
-def results(study_dir, X, rate_window=None, pictures=True):
-    """Remake <study_dir>/results from every case there."""
+def definition_of(study_dir, template):
+    """The study's definition: the studyDict the runner copied into the
+    study directory, else the template's."""
+    recorded = os.path.join(study_dir, study_definition.FILE_NAME)
+    if os.path.isfile(recorded):
+        return study_definition.Definition(recorded)
+    return study_definition.of_template(template)
+
+
+def results(study_dir, X, rate_window=None, pictures=True, definition=None):
+    """Remake <study_dir>/results from every case there, testing the
+    findings of definition (a study.definition.Definition)."""
     out = os.path.join(study_dir, "results")
     os.makedirs(out, exist_ok=True)
     # One at a time: two dpmStudy runs of a work queue that finish together
@@ -384,10 +366,10 @@ def results(study_dir, X, rate_window=None, pictures=True):
         except BlockingIOError:
             say("results: waiting for another dpmStudy making %s" % out)
             fcntl.flock(lock, fcntl.LOCK_EX)
-        remake_results(study_dir, out, X, rate_window, pictures)
+        remake_results(study_dir, out, X, rate_window, pictures, definition)
 
 
-def remake_results(study_dir, out, X, rate_window, pictures):
+def remake_results(study_dir, out, X, rate_window, pictures, definition):
     cases = find_cases(study_dir)
     rows, windows, dirs = [], [], {}
     for c in cases:
@@ -408,17 +390,17 @@ def remake_results(study_dir, out, X, rate_window, pictures):
     write_summary(out, rows, windows, X)
     ensemble = ensembles(rows)
     ewindows = ensemble_windows(windows)
-    found = findings(rows)
+    found = findings(rows, definition)
     write_csv(os.path.join(out, "ensemble.csv"), ensemble)
     write_csv(os.path.join(out, "ensembleWindows.csv"), ewindows)
     write_csv(os.path.join(out, "findings.csv"),
               [OrderedDict((k, v) for k, v in r.items() if k != "cases") for r in found])
-    write_ensemble(out, ensemble, ewindows, found, X, rate_window)
-    effects = dpmStudyVerdicts.variant_effects(
+    write_ensemble(out, ensemble, ewindows, found, X, rate_window, definition)
+    effects = verdicts.variant_effects(
         found, groups_of([r for r in rows if r["finished"]]), BASELINE)
     write_csv(os.path.join(out, "verdicts.csv"), effects)
-    dpmStudyVerdicts.write_verdicts(out, effects, ens.LEVEL)
+    verdicts.write_verdicts(out, effects, ens.LEVEL)
     write_variants(out, cases)
     say("results: %s" % os.path.join(out, "summary.md"))
-    import dpmStudyFigures
-    dpmStudyFigures.figures(rows, ensemble, dirs, out, X, pictures)
+    from . import figures
+    figures.figures(rows, ensemble, dirs, out, X, pictures)

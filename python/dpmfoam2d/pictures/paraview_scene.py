@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The ParaView scene of a dpmFoam2D case: the gas and the particles.
 
-Run inside ParaView (`paraview --script=dpmParaViewScene.py`) or pvbatch, as
+Run inside ParaView (`paraview --script=paraview_scene.py`) or pvbatch, as
 dpmParaView does; it reads its settings from the environment:
 
     DPM_PARAVIEW_CASE        the case directory (required)

@@ -1,0 +1,34 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""dpmfoam2d: what a dpmFoam2D case writes, read into numpy, and the
+project's commands (bin/ holds their launchers).
+
+    import dpmfoam2d as dpm
+    M = dpm.lacey("myCase")              # M(t): columns Time, M, ...
+    p = dpm.particles_at("myCase", 2.0)  # the particle file nearest t = 2 s
+
+Modules:
+    particles       particle files (<case>/particles/<t>.h5, the XDMF index)
+    tables          function-object tables (Lacey, segregation), joined
+                    over restarts
+    fields          gas fields (internal fields of volScalar/VectorFields,
+                    cell centres and volumes, time directories)
+    bed_statistics  bubbles, bed height and particle motion (dpmBedStatistics)
+    pictures        snapshots, movies, M(t) plots, ParaView (dpmSnapshot,
+                    dpmMovie, dpmPlotMixing, dpmPictures, dpmParaView)
+    study           the study runner and its results (dpmStudy)
+"""
+
+import os
+
+from .particles import FIELDS, list_times, nearest_time, read as particles_at, read_particles
+from .tables import lacey, read_dat, read_postprocessing, segregation, study_table
+from .fields import cell_geometry, internal_field, time_dirs
+
+__all__ = ["FIELDS", "list_times", "nearest_time", "particles_at", "read_particles", "lacey",
+           "read_dat", "read_postprocessing", "segregation", "study_table", "cell_geometry",
+           "internal_field", "time_dirs", "PROJECT_DIR", "BIN_DIR"]
+
+# The project's checkout (the package is its python/dpmfoam2d)
+PROJECT_DIR = os.path.realpath(os.path.join(os.path.dirname(__file__), "..", ".."))
+BIN_DIR = os.path.join(PROJECT_DIR, "bin")

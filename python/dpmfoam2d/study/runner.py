@@ -1,0 +1,290 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The study of dpmStudy: its beds and cases made from the template (names,
+settings, variants, locks), run here (study.jobs) or submitted to Slurm
+(study.slurm). The command line and its usage: study.command_line."""
+
+import os
+import re
+import shutil
+import sys
+
+from .. import BIN_DIR
+from . import definition as study_definition
+from . import jobs as study_jobs, results as study_results, slurm as study_slurm
+from .foam_edit import foam_remove, foam_set
+from .jobs import Job, latest_complete_time, lock_holder, running_in, take_lock
+from .variants import Variant
+
+
+# What a case or bed does not take from the template: run products, and
+# the study's own files (its variants and studyDict)
+NOT_COPIED = re.compile(r"^([0-9][0-9.eE+-]*|[0-9.]+\.incomplete(\.[0-9]+)?|particles|"
+                        r"postProcessing|images|log\..*|case\.foam|dynamicCode|\.dpmLock|"
+                        r"polyMesh|packedBed.*|variants|studyDict)$")
+
+
+def say(*args):
+    print(*args, flush=True)
+
+
+def bed_name(w, seed=None, variant=None):
+    return "w%.2f" % w + ("_" + variant if variant else "") + \
+        ("" if seed is None else "_seed%d" % seed)
+
+
+def case_name(w, p, seed=None, variant=None):
+    return "w%.2f_%gbar" % (w, p) + ("_" + variant if variant else "") + \
+        ("" if seed is None else "_seed%d" % seed)
+
+
+def copy_template(template, dest):
+    shutil.copytree(template, dest,
+                    ignore=lambda d, names: [n for n in names if NOT_COPIED.match(n)])
+
+
+class Study:
+
+    def __init__(self, args):
+        self.a = args
+        self.dir = os.path.abspath(args.studyDir)
+        self.template = os.path.realpath(args.template)
+        self.ws = args.w
+        self.ps = args.p
+        self.seeds = args.seeds or [None]
+        self.definition = args.definition
+        self.here = BIN_DIR
+        self.slurm_states = None     # squeue's view, read once when needed
+        self.variant = Variant(args.variant, self.template) if args.variant else None
+        if self.variant:
+            self.variant.check(self.template)
+        # caseSettings particleScale from -scale (a variant's own included)
+        self.scale = self.variant.scaled(args.scale) if self.variant else args.scale
+
+    def apply_variant(self, directory):
+        """The variant's edits, then -scale's particleScale (it includes the
+        variant's own)."""
+        self.variant.apply(directory)
+        if self.scale is not None:
+            foam_set(os.path.join(directory, "constant", "caseSettings"),
+                     "particleScale", self.scale)
+
+    # -- setting up ---------------------------------------------------------
+
+    def settings(self, case, w, p=None, seed=None):
+        s = os.path.join(case, "constant", "caseSettings")
+        foam_set(s, "wSmall", w)
+        if seed is not None:
+            foam_set(s, "seed", seed)
+        if p is not None:
+            foam_set(s, "pressure", p)
+        for entry in ("endTime", "settleTime", "writeInterval"):
+            value = getattr(self.a, entry)
+            if value is not None:
+                foam_set(s, entry, value)
+        if self.scale is not None:
+            foam_set(s, "particleScale", self.scale)
+        # How U0 is set (gasProperties has exactly one of the two entries)
+        gas = os.path.join(case, "constant", "gasProperties")
+        for entry, other in (("U0byUmf", "excessVelocity"), ("excessVelocity", "U0byUmf")):
+            value = getattr(self.a, entry)
+            if value is not None and p is not None:
+                foam_remove(gas, other)
+                foam_set(gas, entry, value)
+
+    def bed_of(self, w, seed=None):
+        """The bed's name: the template's, or the variant's own if it shapes it."""
+        own = self.variant and self.variant.shapes_bed()
+        return bed_name(w, seed, self.variant.name if own else None)
+
+    def bed_job(self, w, seed=None):
+        bed = os.path.join(self.dir, "beds", self.bed_of(w, seed))
+        state = os.path.join(bed, "constant", "packedBed.state")
+        if os.path.isfile(state):
+            return None
+        queued = self.slurm_active(bed)
+        if queued:
+            return queued[0]
+        pid = running_in(bed)
+        if pid:
+            sys.exit("dpmStudy: %s is being packed by process %d (another dpmStudy?): "
+                     "run again when it has finished" % (bed, pid))
+        if not os.path.isdir(bed):
+            copy_template(self.template, bed)
+        lock = take_lock(bed)
+        if lock is None:
+            sys.exit("dpmStudy: %s is being packed by %s: run again when it has finished"
+                     % (bed, lock_holder(bed) or "another process"))
+        try:
+            self.settings(bed, w, seed=seed)
+            if self.variant and self.variant.shapes_bed():
+                self.apply_variant(bed)     # after the settings, as in its cases
+        finally:
+            os.close(lock)
+        # Saved under a temporary name first: a packing killed half-way
+        # leaves no bed that looks finished (-overwrite: a temporary left by
+        # an earlier, interrupted study is the study's own to replace).
+        command = ("set -e; rm -rf 0; cp -r 0.orig 0; blockMesh > log.blockMesh 2>&1; "
+                   "dpmPackBed -overwrite -output constant/packedBed.state.tmp; "
+                   "mv constant/packedBed.state.tmp constant/packedBed.state")
+        return Job("beds/" + self.bed_of(w, seed), bed, command, "log.dpmPackBed")
+
+    def case_dir(self, w, p, seed=None):
+        return os.path.join(self.dir, case_name(w, p, seed,
+                                                self.variant.name if self.variant else None))
+
+    def end_time(self, case):
+        return float(study_results.flat_dictionary(
+            os.path.join(case, "constant", "caseSettings"))["endTime"])
+
+    def finished(self, case):
+        t = latest_complete_time(case)
+        return t is not None and os.path.isfile(os.path.join(case, "log.dpmFoam2D")) \
+            and t >= self.end_time(case) - 1e-9
+
+    def case_job(self, w, p, seed, bed):
+        case = self.case_dir(w, p, seed)
+        name = os.path.basename(case)
+        existed = os.path.isdir(case)
+        if not existed:
+            copy_template(self.template, case)
+            self.settings(case, w, p, seed)
+            # before the variant: foamDictionary writes particleProperties
+            # with its #includeIfPresent "packedBed" expanded as it is then
+            with open(os.path.join(case, "constant", "packedBed"), "w") as f:
+                f.write('// The bed of this mass fraction, packed once by dpmStudy\n'
+                        'file "$FOAM_CASE/../beds/%s/constant/packedBed.state";\n'
+                        % self.bed_of(w, seed))
+            if self.variant:
+                self.apply_variant(case)
+        else:
+            self.check_variant(case)
+            queued = self.slurm_active(case)
+            if queued:
+                say("%-16s skipped: Slurm task %s is %s" % (name, queued[0], queued[1].lower()))
+                return None
+            pid = running_in(case)
+            if pid:
+                say("%-16s skipped: process %d runs in it (another dpmStudy?)" % (name, pid))
+                return None
+        # the case's lock while it is set up: no solver starts in it meanwhile
+        lock = take_lock(case)
+        if lock is None:
+            say("%-16s skipped: %s holds its lock" % (name, lock_holder(case) or "another process"))
+            return None
+        try:
+            if existed:
+                self.settings(case, w, p, seed)
+            if self.finished(case):
+                return None
+            latest_complete_time(case, set_aside=True)
+        finally:
+            os.close(lock)
+        steps = ["set -e"]
+        if not os.path.isdir(os.path.join(case, "0")):
+            steps.append("cp -r 0.orig 0")
+        if not os.path.isfile(os.path.join(case, "constant", "polyMesh", "faces")):
+            steps.append("blockMesh > log.blockMesh 2>&1")
+        steps.append("exec dpmFoam2D")
+        return Job(name, case, "; ".join(steps), "log.dpmFoam2D", bed,
+                   finished=lambda: self.finished(case))
+
+    def slurm_active(self, directory):
+        """(Slurm id, state) of a pending or running task of directory."""
+        if study_slurm.read_record(directory) is None:
+            return None
+        if self.slurm_states is None:
+            self.slurm_states = study_slurm.queue_states()
+        return study_slurm.active(directory, self.slurm_states)
+
+    def check_variant(self, case):
+        """An existing case was made with this variant's edits, unchanged."""
+        record = os.path.join(case, "constant", "variant")
+        had = open(record).read() if os.path.isfile(record) else None
+        want = self.variant.record() if self.variant else None
+        if had != want:
+            sys.exit("dpmStudy: %s was made %s, now %s: the edits differ; remove the "
+                     "case or use another study directory"
+                     % (case, "with the variant recorded in " + record if had else
+                        "without a variant", "variant " + self.variant.path
+                        if self.variant else "without one"))
+
+    # -- running ------------------------------------------------------------
+
+    def prepare(self):
+        """Make the beds and cases not made yet; return the jobs still to
+        run (beds, cases) and the Slurm ids of beds being packed there."""
+        os.makedirs(self.dir, exist_ok=True)
+        self.record_definition()
+        beds, bed_jobs, queued = {}, [], []
+        for w in self.ws:
+            for seed in self.seeds:
+                job = self.bed_job(w, seed)
+                if isinstance(job, str):        # a Slurm task packs it
+                    queued.append(job)
+                    job = None
+                beds[w, seed] = job
+                if job:
+                    bed_jobs.append(job)
+        case_jobs = []
+        for w in self.ws:
+            for p in self.ps:
+                for seed in self.seeds:
+                    job = self.case_job(w, p, seed, beds[w, seed])
+                    if job:
+                        case_jobs.append(job)
+                    elif self.finished(self.case_dir(w, p, seed)):
+                        case = self.case_dir(w, p, seed)
+                        say("%-16s finished (t = %g s)" % (os.path.basename(case),
+                                                           self.end_time(case)))
+        return bed_jobs, case_jobs, queued
+
+    def record_definition(self):
+        """The template's studyDict copied into the study directory (the
+        results follow the copy); a study made with another one is refused."""
+        path = os.path.join(self.dir, study_definition.FILE_NAME)
+        if not os.path.isfile(path):
+            tmp = "%s.tmp%d" % (path, os.getpid())
+            with open(tmp, "w") as f:
+                f.write(self.definition.text)
+            os.replace(tmp, path)
+            return
+        with open(path) as f:
+            if f.read() != self.definition.text:
+                sys.exit("dpmStudy: %s differs from the template's %s: the study was made "
+                         "with another matrix or other findings; remove %s to take the "
+                         "template's, or use another study directory"
+                         % (path, self.definition.path, path))
+
+    def run(self):
+        bed_jobs, case_jobs, queued = self.prepare()
+        if queued:
+            sys.exit("dpmStudy: Slurm packs beds of this study (tasks %s): run again when "
+                     "they have finished, or submit with -slurm" % ", ".join(queued))
+        jobs = bed_jobs + case_jobs
+        if not jobs:
+            return
+        lock = os.path.join(self.dir, ".dpmStudy.running")
+        os.makedirs(lock, exist_ok=True)
+        mine = os.path.join(lock, str(os.getpid()))
+        open(mine, "w").close()
+        try:
+            study_jobs.run_here(self, jobs)
+        finally:
+            os.remove(mine)
+
+    def submit(self, sbatch_options, results_args):
+        """The jobs as Slurm job arrays (see study.slurm)."""
+        study_slurm.check_sbatch()
+        lock = os.path.join(self.dir, ".dpmStudy.running")
+        others = [pid for pid in (os.listdir(lock) if os.path.isdir(lock) else [])
+                  if pid.isdigit() and os.path.isdir("/proc/" + pid)]
+        if others:
+            sys.exit("dpmStudy: a local dpmStudy (process %s) runs this study; stop it "
+                     "(its cases continue on the cluster) and submit again; nothing "
+                     "submitted" % ", ".join(others))
+        bed_jobs, case_jobs, queued = self.prepare()
+        if not bed_jobs and not case_jobs:
+            say("dpmStudy: nothing to submit")
+            return
+        study_slurm.submit(self, bed_jobs, case_jobs, queued, sbatch_options, results_args)
