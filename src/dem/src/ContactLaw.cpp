@@ -10,19 +10,46 @@ namespace {
 constexpr double pi = 3.14159265358979323846;
 }
 
-double dampingFromRestitution(double mEff, double kn, double e)
+double restitutionOfDampingRatio(double zeta)
 {
-    const double lnE = std::log(e);
-    return 2.0 * std::sqrt(mEff * kn) * std::abs(lnE) / std::sqrt(pi * pi + lnE * lnE);
+    // x'' + 2 zeta x' + x = 0 from x = 0, x' = 1 (time in 1/omega_0) until the force
+    // x + 2 zeta x' vanishes; e = -x' then (Schwager and Poeschel 2007)
+    if (zeta <= 0.0) return 1.0;
+    if (zeta < 1.0) {
+        const double w = std::sqrt(1.0 - zeta * zeta);
+        const double phase = pi - std::atan2(2.0 * zeta * w, 1.0 - 2.0 * zeta * zeta);
+        return std::exp(-zeta * phase / w) * (zeta / w * std::sin(phase) - std::cos(phase));
+    }
+    if (zeta == 1.0) return std::exp(-2.0);
+    // Overdamped: x ~ exp(r1 t) - exp(r2 t), r1 r2 = 1, r1 = -1/(zeta + s) without cancellation
+    const double s = std::sqrt(zeta * zeta - 1.0);
+    const double r2 = -zeta - s;
+    const double r1 = 1.0 / r2;
+    // (1 + 2 zeta r1) exp(r1 t) = (1 + 2 zeta r2) exp(r2 t), with 1 + 2 zeta r1 = -r1^2
+    const double t = std::log((1.0 + 2.0 * zeta * r2) / (-r1 * r1)) / (2.0 * s);
+    return -(r1 * std::exp(r1 * t) - r2 * std::exp(r2 * t)) / (2.0 * s);
 }
 
-ContactLaw makeContactLaw(double mEff, double kn, double kt, double e, double mu)
+double dampingFromRestitution(double mEff, double kn, double e)
+{
+    // e falls monotonically with zeta, from 1 at 0 to 0 as zeta -> inf: bisection
+    double low = 0.0, high = 1.0;
+    while (restitutionOfDampingRatio(high) > e && high < 1e12) high *= 2.0;
+    for (int k = 0; k < 200 && high - low > 1e-15 * high; ++k) {
+        const double mid = 0.5 * (low + high);
+        (restitutionOfDampingRatio(mid) > e ? low : high) = mid;
+    }
+    return 2.0 * std::sqrt(mEff * kn) * 0.5 * (low + high);
+}
+
+ContactLaw makeContactLaw(double mEff, double kn, double kt, double e, double mu,
+                          double tangentialDampingRatio)
 {
     ContactLaw law;
     law.kn = kn;
     law.kt = kt < 0.0 ? 2.0 / 7.0 * kn : kt;
     law.etaN = dampingFromRestitution(mEff, kn, e);
-    law.etaT = law.etaN;
+    law.etaT = tangentialDampingRatio * law.etaN;
     law.mu = mu;
     return law;
 }
@@ -31,12 +58,6 @@ void addRollingResistance(ContactLaw& law, double muR, double rRolling, double i
 {
     law.rollingTorquePerForce = muR * rRolling;
     law.rollingTorquePerSpin = iEff / (rollingStopSteps * dt);
-}
-
-double contactDuration(double mEff, double kn, double etaN)
-{
-    const double a = etaN / (2.0 * mEff);
-    return pi / std::sqrt(kn / mEff - a * a);
 }
 
 } // namespace dem

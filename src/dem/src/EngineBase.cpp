@@ -72,12 +72,14 @@ EngineBase<Derived, Traits>::EngineBase(const Settings& settings, std::vector<Wa
     for (int a = 0; a < nClasses_; ++a) {
         for (int b = 0; b < nClasses_; ++b) {
             const double mEff = m[a] * m[b] / (m[a] + m[b]);
-            ContactLaw law = makeContactLaw(mEff, c.kn, c.kt, c.restitution, c.frictionParticle);
+            ContactLaw law = makeContactLaw(mEff, c.kn, c.kt, c.restitution, c.frictionParticle,
+                                            c.tangentialDampingRatio);
             addRollingResistance(law, c.rollingFriction, r[a] * r[b] / (r[a] + r[b]),
                                  inertia[a] * inertia[b] / (inertia[a] + inertia[b]), settings_.dt);
             pairLaws_.push_back(law);
         }
-        ContactLaw law = makeContactLaw(m[a], c.kn, c.kt, c.restitutionWall, c.frictionWall);
+        ContactLaw law = makeContactLaw(m[a], c.kn, c.kt, c.restitutionWall, c.frictionWall,
+                                        c.tangentialDampingRatio);
         addRollingResistance(law, c.rollingFrictionWall, r[a], inertia[a], settings_.dt);
         wallLaws_.push_back(law);
     }

@@ -37,7 +37,9 @@ void requireNonNegative(double value, const std::string& name)
 void requireRestitution(double value, const std::string& name)
 {
     if (!(value > 0.0 && value <= 1.0)) {
-        throw Error(name + " = " + formatValue(value) + " is outside (0, 1]");
+        // The clamped dashpot leaves a rebound at any finite damping (model.md section 3)
+        const std::string why = value == 0.0 ? ": e = 0 would need an infinite damping" : "";
+        throw Error(name + " = " + formatValue(value) + " is outside (0, 1]" + why);
     }
 }
 
@@ -125,6 +127,7 @@ void validateSettings(const Settings& s)
     requireRestitution(c.restitutionWall, "restitutionWall");
     requireNonNegative(c.frictionParticle, "frictionParticle");
     requireNonNegative(c.frictionWall, "frictionWall");
+    requireNonNegative(c.tangentialDampingRatio, "tangentialDampingRatio");
     requireNonNegative(c.rollingFriction, "rollingFriction");
     requireNonNegative(c.rollingFrictionWall, "rollingFrictionWall");
 

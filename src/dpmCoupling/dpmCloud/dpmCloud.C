@@ -114,6 +114,11 @@ dem::Settings Foam::dpmCloud::demSettings() const
     cs.frictionParticle =
         contact.lookupOrDefault<scalar>("frictionParticle", cs.frictionParticle);
     cs.frictionWall = contact.lookupOrDefault<scalar>("frictionWall", cs.frictionWall);
+    cs.tangentialDampingRatio =
+        contact.lookupOrDefault<scalar>
+        (
+            "tangentialDampingRatio", cs.tangentialDampingRatio
+        );
     cs.rollingFriction =
         contact.lookupOrDefault<scalar>("rollingFriction", cs.rollingFriction);
     cs.rollingFrictionWall =

@@ -77,12 +77,13 @@ inline Eigen::Vector3d selectWithoutBranch(bool c, const Eigen::Vector3d& a,
             selectWithoutBranch(c, a.z(), b.z())};
 }
 
-/// Normal force magnitude kn delta + etaN vn (vn > 0 approaching); F_n = -fn nHat on i.
-/// No clamp of the tensile part near the end of the contact: the exact restitution of
-/// eta_n(e) assumes the unclamped law.
+/// Normal force magnitude max(kn delta + etaN vn, 0) (vn > 0 approaching); F_n = -fn nHat on
+/// i. Clamped at zero: the dashpot does not pull the particles together before they part,
+/// so friction and rolling resistance, limited by fn, act only while they are pressed
+/// (etaN is the damping that gives e with the clamp, dampingFromRestitution).
 inline double normalForce(double overlap, double vn, const ContactLaw& law)
 {
-    return law.kn * overlap + law.etaN * vn;
+    return std::max(law.kn * overlap + law.etaN * vn, 0.0);
 }
 
 /// Constant-torque rolling resistance (Ai et al. 2011, type A; model.md, "Rolling
@@ -93,7 +94,7 @@ template <int Dim>
 [[gnu::always_inline]] inline typename ContactTypes<Dim>::Rotational
 rollingTorque(const PairGeometryT<Dim>& g, double fn, const ContactLaw& law)
 {
-    const double limit = law.rollingTorquePerForce * std::max(fn, 0.0);
+    const double limit = law.rollingTorquePerForce * fn;
     if constexpr (Dim == 2) {
         const double m = std::min(limit, law.rollingTorquePerSpin * std::abs(g.omegaRel));
         return -std::copysign(m, g.omegaRel);
@@ -112,7 +113,7 @@ rollingTorque(const PairGeometryT<Dim>& g, double fn, const ContactLaw& law)
 /// removed, its length kept), then the tangential relative displacement of the step is
 /// added. In 2D the tangent "plane" is the line tHat = ez x nHat and the history is the
 /// scalar component along tHat, so it turns with the normal by construction.
-/// When the trial force (spring + dashpot) exceeds mu |Fn| the contact slides: the force is
+/// When the trial force (spring + dashpot) exceeds mu Fn the contact slides: the force is
 /// set to the limit and the stored displacement is reset so that the spring alone carries it,
 /// xi = -Ft/kt. Dashpot velocity is the one passed in vRel. dt = 0 evaluates without
 /// accumulating history. Torques: (r_i nHat) x Ft on i and (r_j nHat) x Ft on j (its lever
@@ -132,7 +133,7 @@ template <int Dim, bool Rolling = false>
         const double fn = normalForce(g.overlap, vn, law);
         const double xiTrial = g.xiT + vt * dt;
         const double trial = -law.kt * xiTrial - law.etaT * vt;
-        const double limit = law.mu * std::abs(fn);
+        const double limit = law.mu * fn;
         // Sliding picked without a branch, both outcomes computed: contacts start and end
         // sliding unpredictably in a bubbling bed
         const double capped = std::copysign(limit, trial);
@@ -154,7 +155,7 @@ template <int Dim, bool Rolling = false>
     } else {
         const double vn = g.vRel.dot(g.nHat);
         const double fn = normalForce(g.overlap, vn, law);
-        const double limit = law.mu * std::abs(fn);
+        const double limit = law.mu * fn;
         const Eigen::Vector3d vt = g.vRel - vn * g.nHat;
         // Turn the stored displacement into the current tangent plane, keeping its length.
         Eigen::Vector3d xi = g.xiT - g.xiT.dot(g.nHat) * g.nHat;

@@ -11,7 +11,7 @@ struct ContactLaw {
     double kn;     ///< normal stiffness, N/m
     double kt;     ///< tangential stiffness, N/m
     double etaN;   ///< normal damping, N s/m
-    double etaT;   ///< tangential damping, N s/m (= etaN, as the paper's Table 1 has one eta)
+    double etaT;   ///< tangential damping, N s/m (by default = etaN: the paper's Table 1 has one eta)
     double mu;     ///< sliding friction coefficient
     /// Rolling resistance (model.md, "Rolling resistance"): mu_r R_r, the largest rolling
     /// torque per newton of normal force, m; 0 without rolling resistance.
@@ -21,12 +21,20 @@ struct ContactLaw {
     double rollingTorquePerSpin = 0.0;
 };
 
-/// Normal damping that gives restitution e for a head-on collision of effective mass mEff:
-/// etaN = 2 sqrt(mEff kn) |ln e| / sqrt(pi^2 + ln^2 e)  (docs/theory/paper-model.md, "Particles").
+/// Restitution of a head-on collision of the linear spring-dashpot whose normal force is
+/// clamped at zero, at damping ratio zeta = etaN/(2 sqrt(mEff kn)): the particles part when
+/// the force vanishes (Schwager and Poeschel 2007; model.md section 3).
+double restitutionOfDampingRatio(double zeta);
+
+/// Normal damping that gives restitution e in (0, 1] for a head-on collision of effective
+/// mass mEff under the clamped law: etaN = 2 zeta sqrt(mEff kn), zeta the root of
+/// restitutionOfDampingRatio(zeta) = e.
 double dampingFromRestitution(double mEff, double kn, double e);
 
-/// Law for a contact of effective mass mEff (m_i m_j/(m_i + m_j), or m_i for a wall).
-ContactLaw makeContactLaw(double mEff, double kn, double kt, double e, double mu);
+/// Law for a contact of effective mass mEff (m_i m_j/(m_i + m_j), or m_i for a wall); kt < 0
+/// means 2/7 kn, and etaT = tangentialDampingRatio etaN.
+ContactLaw makeContactLaw(double mEff, double kn, double kt, double e, double mu,
+                          double tangentialDampingRatio = 1.0);
 
 /// Adds the constant-torque rolling resistance of coefficient muR to `law`, for a contact of
 /// rolling radius rRolling (r_i r_j/(r_i + r_j), or r_i for a wall, m) and effective moment
@@ -36,8 +44,5 @@ void addRollingResistance(ContactLaw& law, double muR, double rRolling, double i
 /// Steps over which the clamped rolling torque stops the relative rolling at the fastest:
 /// with n = 4 a particle's rolling torques stay stable with up to eight contacts.
 constexpr double rollingStopSteps = 4.0;
-
-/// Duration of a head-on contact of the linear spring-dashpot, pi / sqrt(kn/mEff - (etaN/(2 mEff))^2), s.
-double contactDuration(double mEff, double kn, double etaN);
 
 } // namespace dem

@@ -25,6 +25,8 @@ struct ParticleClass {
 struct ContactSettings {
     double kn = 800.0;                 ///< normal stiffness, N/m
     double kt = -1.0;                  ///< tangential stiffness, N/m; < 0 means 2/7 kn
+    /// Tangential damping over the normal one, eta_t/eta_n, >= 0 (1: the paper's one eta).
+    double tangentialDampingRatio = 1.0;
     double restitution = 0.97;         ///< particle-particle, in (0, 1]
     double restitutionWall = 0.97;     ///< particle-wall, in (0, 1]
     double frictionParticle = 0.15;    ///< sliding friction particle-particle, >= 0
