@@ -1,10 +1,12 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tangential spring-dashpot's stiffness (contact entry kt, default 2/7 kn) and damping
 // (tangentialDampingRatio = eta_t/eta_n, default 1) in both engines. A sphere resting on the
 // floor whose contact point is set moving at vt0 without sliding oscillates as
 //   m_t xi'' + eta_t xi' + kt xi = 0,   m_t = m I/(I + m r^2) = 2/7 m   (I = m d^2/10),
 // since vx' = F/m and w' = r F/I move the contact point at vt = vx + w r: a damped period
-// 2 pi/sqrt(kt/m_t - g^2) and a decay rate g = eta_t/(2 m_t). eta_n is computed here from the restitution as model.md
-// section 3 gives it (the clamped dashpot's e(zeta), Schwager and Poeschel 2007).
+// 2 pi/sqrt(kt/m_t - g^2) and a decay rate g = eta_t/(2 m_t). eta_n is computed from the restitution by
+// TestHelpers' etaFor (the clamped dashpot's e(zeta), Schwager and Poeschel 2007).
 
 #include "TestHelpers.hpp"
 
@@ -21,23 +23,7 @@ namespace {
 constexpr double kn = 800.0;
 constexpr double eWall = 0.97;
 
-/// Restitution of the clamped linear dashpot at damping ratio zeta < 1 (model.md section 3).
-double clampedRestitution(double zeta)
-{
-    const double w = std::sqrt(1.0 - zeta * zeta);
-    const double phase = pi - std::atan2(2.0 * zeta * w, 1.0 - 2.0 * zeta * zeta);
-    return std::exp(-zeta * phase / w) * (zeta / w * std::sin(phase) - std::cos(phase));
-}
-
-double normalDamping(double m, double e)
-{
-    double low = 0.0, high = 1.0;
-    for (int k = 0; k < 100; ++k) {
-        const double mid = 0.5 * (low + high);
-        (clampedRestitution(mid) > e ? low : high) = mid;
-    }
-    return 2.0 * low * std::sqrt(m * kn);
-}
+double normalDamping(double m, double e) { return etaFor(m, kn, e); }
 
 struct Oscillation {
     double period;   // s, mean over the peaks
