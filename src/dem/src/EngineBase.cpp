@@ -69,15 +69,36 @@ EngineBase<Derived, Traits>::EngineBase(const Settings& settings, std::vector<Wa
         r[k] = 0.5 * d;
         inertia[k] = m[k] * d * d / 10.0;   // a solid sphere, as Particles has it
     }
+    hertzMindlin_ = c.law == ContactLawType::hertzMindlin;
+    const std::vector<ParticleClass>& cls = settings_.classes;
     for (int a = 0; a < nClasses_; ++a) {
         for (int b = 0; b < nClasses_; ++b) {
             const double mEff = m[a] * m[b] / (m[a] + m[b]);
-            ContactLaw law = makeContactLaw(mEff, c.kn, c.kt, c.restitution, c.frictionParticle);
-            addRollingResistance(law, c.rollingFriction, r[a] * r[b] / (r[a] + r[b]),
+            const double rEff = r[a] * r[b] / (r[a] + r[b]);
+            ContactLaw law = hertzMindlin_
+                ? makeHertzMindlinLaw(
+                      mEff, rEff,
+                      effectiveYoungsModulus(cls[a].youngsModulus, cls[a].poissonRatio,
+                                             cls[b].youngsModulus, cls[b].poissonRatio),
+                      effectiveShearModulus(cls[a].youngsModulus, cls[a].poissonRatio,
+                                            cls[b].youngsModulus, cls[b].poissonRatio),
+                      c.restitution, c.frictionParticle, c.tangentialDampingRatio)
+                : makeContactLaw(mEff, c.kn, c.kt, c.restitution, c.frictionParticle,
+                                 c.tangentialDampingRatio);
+            addRollingResistance(law, c.rollingFriction, rEff,
                                  inertia[a] * inertia[b] / (inertia[a] + inertia[b]), settings_.dt);
             pairLaws_.push_back(law);
         }
-        ContactLaw law = makeContactLaw(m[a], c.kn, c.kt, c.restitutionWall, c.frictionWall);
+        ContactLaw law = hertzMindlin_
+            ? makeHertzMindlinLaw(
+                  m[a], r[a],
+                  effectiveYoungsModulus(cls[a].youngsModulus, cls[a].poissonRatio,
+                                         c.wallYoungsModulus, c.wallPoissonRatio),
+                  effectiveShearModulus(cls[a].youngsModulus, cls[a].poissonRatio,
+                                        c.wallYoungsModulus, c.wallPoissonRatio),
+                  c.restitutionWall, c.frictionWall, c.tangentialDampingRatio)
+            : makeContactLaw(m[a], c.kn, c.kt, c.restitutionWall, c.frictionWall,
+                             c.tangentialDampingRatio);
         addRollingResistance(law, c.rollingFrictionWall, r[a], inertia[a], settings_.dt);
         wallLaws_.push_back(law);
     }

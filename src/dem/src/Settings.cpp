@@ -1,5 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "dem/ContactLaw.hpp"
 #include "dem/System.hpp"
 
 #include <algorithm>
@@ -37,7 +38,9 @@ void requireNonNegative(double value, const std::string& name)
 void requireRestitution(double value, const std::string& name)
 {
     if (!(value > 0.0 && value <= 1.0)) {
-        throw Error(name + " = " + formatValue(value) + " is outside (0, 1]");
+        // The clamped dashpot leaves a rebound at any finite damping (model.md, "Particles")
+        const std::string why = value == 0.0 ? ": e = 0 would need an infinite damping" : "";
+        throw Error(name + " = " + formatValue(value) + " is outside (0, 1]" + why);
     }
 }
 
@@ -48,35 +51,100 @@ std::string className(const Settings& s, int k)
 
 } // namespace
 
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+double classMass(const ParticleClass& c)
+{
+    return c.density * pi * c.diameter * c.diameter * c.diameter / 6.0;
+}
+
+/// body(lighter class, its mass, mEff, R*, E*) for every pair of classes and every class on
+/// a wall, the kinds of Hertz contact.
+template <class Body>
+void forEachHertzContact(const Settings& s, const Body& body)
+{
+    const ContactSettings& c = s.contact;
+    const std::size_t n = s.classes.size();
+    for (std::size_t a = 0; a < n; ++a) {
+        const ParticleClass& ca = s.classes[a];
+        const double ma = classMass(ca);
+        const double ra = 0.5 * ca.diameter;
+        for (std::size_t b = a; b < n; ++b) {
+            const ParticleClass& cb = s.classes[b];
+            const double mb = classMass(cb);
+            const double rb = 0.5 * cb.diameter;
+            body(static_cast<int>(ma <= mb ? a : b), std::min(ma, mb), ma * mb / (ma + mb),
+                 ra * rb / (ra + rb),
+                 effectiveYoungsModulus(ca.youngsModulus, ca.poissonRatio, cb.youngsModulus,
+                                        cb.poissonRatio));
+        }
+        body(static_cast<int>(a), ma, ma, ra,
+             effectiveYoungsModulus(ca.youngsModulus, ca.poissonRatio, c.wallYoungsModulus,
+                                    c.wallPoissonRatio));
+    }
+}
+
+} // namespace
+
+std::string contactLawName(ContactLawType law)
+{
+    return law == ContactLawType::hertzMindlin ? "HertzMindlin" : "linear";
+}
+
+ContactLawType contactLawFromName(const std::string& name)
+{
+    for (ContactLawType law : {ContactLawType::linear, ContactLawType::hertzMindlin}) {
+        if (name == contactLawName(law)) return law;
+    }
+    throw Error("contactLaw '" + name + "' is not one of: linear, HertzMindlin");
+}
+
 double timeStepBound(const Settings& settings, int* smallestClass)
 {
-    constexpr double pi = 3.14159265358979323846;
-    double mMin = INFINITY;
     int kMin = 0;
-    for (std::size_t k = 0; k < settings.classes.size(); ++k) {
-        const double d = settings.classes[k].diameter;
-        const double m = settings.classes[k].density * pi * d * d * d / 6.0;
-        if (m < mMin) {
-            mMin = m;
-            kMin = static_cast<int>(k);
+    double bound = INFINITY;
+    if (settings.contact.law == ContactLawType::hertzMindlin) {
+        const double v = settings.contact.impactSpeed;
+        forEachHertzContact(settings, [&](int k, double m, double mEff, double rEff, double eStar) {
+            const double deltaMax = std::pow(15.0 * mEff * v * v / (16.0 * eStar * std::sqrt(rEff)), 0.4);
+            const double stiffness = 2.0 * eStar * std::sqrt(rEff * deltaMax);
+            const double b = 2.0 * pi / 5.0 * std::sqrt(m / stiffness);
+            if (b < bound) {
+                bound = b;
+                kMin = k;
+            }
+        });
+    } else {
+        double mMin = INFINITY;
+        for (std::size_t k = 0; k < settings.classes.size(); ++k) {
+            const double m = classMass(settings.classes[k]);
+            if (m < mMin) {
+                mMin = m;
+                kMin = static_cast<int>(k);
+            }
         }
+        bound = 2.0 * pi / 5.0 * std::sqrt(mMin / settings.contact.kn);
     }
     if (smallestClass) *smallestClass = kMin;
-    return 2.0 * pi / 5.0 * std::sqrt(mMin / settings.contact.kn);
+    return bound;
 }
 
 double pairContactTime(const Settings& settings)
 {
-    constexpr double pi = 3.14159265358979323846;
+    const ContactSettings& c = settings.contact;
+    if (c.law == ContactLawType::hertzMindlin) {
+        double tc = INFINITY;
+        forEachHertzContact(settings, [&](int, double, double mEff, double rEff, double eStar) {
+            tc = std::min(tc, hertzContactTime(mEff, rEff, eStar, c.impactSpeed));
+        });
+        return tc;
+    }
     int k = 0;
     timeStepBound(settings, &k);
-    const double d = settings.classes[k].diameter;
-    const double mEff = 0.5 * settings.classes[k].density * pi * d * d * d / 6.0;
-    const double kn = settings.contact.kn;
-    const double l = std::log(settings.contact.restitution);
-    const double eta = 2.0 * std::sqrt(mEff * kn) * std::abs(l) / std::sqrt(pi * pi + l * l);
-    const double a = eta / (2.0 * mEff);
-    return pi / std::sqrt(kn / mEff - a * a);
+    const double mEff = 0.5 * classMass(settings.classes[k]);
+    return linearContactDuration(mEff, c.kn, dampingFromRestitution(mEff, c.kn, c.restitution));
 }
 
 // Measured with the paper's particles (TestStepBound; docs/model.md): at dt = t_c/10 a
@@ -125,8 +193,33 @@ void validateSettings(const Settings& s)
     requireRestitution(c.restitutionWall, "restitutionWall");
     requireNonNegative(c.frictionParticle, "frictionParticle");
     requireNonNegative(c.frictionWall, "frictionWall");
+    requireNonNegative(c.tangentialDampingRatio, "tangentialDampingRatio");
     requireNonNegative(c.rollingFriction, "rollingFriction");
     requireNonNegative(c.rollingFrictionWall, "rollingFrictionWall");
+    if (c.law == ContactLawType::hertzMindlin) {
+        // The moduli of every material; kt is the linear law's (Mindlin's comes from them)
+        auto requireMaterial = [](double youngs, double poisson, const std::string& youngsName,
+                                  const std::string& poissonName) {
+            requirePositive(youngs, youngsName);
+            if (!(poisson > -1.0 && poisson <= 0.5)) {
+                throw Error(poissonName + " = " + formatValue(poisson)
+                            + " is outside (-1, 0.5] (contactLaw HertzMindlin)");
+            }
+        };
+        for (std::size_t k = 0; k < s.classes.size(); ++k) {
+            const std::string name = className(s, static_cast<int>(k));
+            requireMaterial(s.classes[k].youngsModulus, s.classes[k].poissonRatio,
+                            name + ".youngsModulus", name + ".poissonRatio");
+        }
+        requireMaterial(c.wallYoungsModulus, c.wallPoissonRatio, "wallYoungsModulus",
+                        "wallPoissonRatio");
+        requirePositive(c.impactSpeed, "impactSpeed");
+        if (c.kt >= 0.0) {
+            throw Error("kt = " + formatValue(c.kt) + " is the linear law's tangential stiffness: "
+                        "contactLaw HertzMindlin takes Mindlin's from youngsModulus and "
+                        "poissonRatio (remove kt)");
+        }
+    }
 
     const Box& b = s.box;
     if (!(b.xMax > b.xMin) || !std::isfinite(b.xMax - b.xMin)) {
@@ -167,10 +260,14 @@ void validateSettings(const Settings& s)
     int kMin = 0;
     const double bound = timeStepBound(s, &kMin);
     if (s.dt > bound) {
+        const std::string stiffness = c.law == ContactLawType::hertzMindlin
+            ? "(2 pi/5) sqrt(m/S), S Hertz's stiffness at the peak overlap of an impact at "
+              "impactSpeed = " + formatValue(c.impactSpeed) + " m/s,"
+            : "(2 pi/5) sqrt(m_min/kn) = " + formatValue(bound) + " s (paper eq. 7)";
         throw Error("dt = " + formatValue(s.dt) + " s is outside (0, " + formatValue(bound)
-                    + "]: the time-step bound (2 pi/5) sqrt(m_min/kn) = " + formatValue(bound)
-                    + " s (paper eq. 7) of the smallest particle, " + className(s, kMin)
-                    + " of diameter " + formatValue(s.classes[kMin].diameter) + " m");
+                    + "]: the time-step bound " + stiffness + " of the smallest particle, "
+                    + className(s, kMin) + " of diameter "
+                    + formatValue(s.classes[kMin].diameter) + " m");
     }
 }
 

@@ -142,14 +142,12 @@ void SlabSystem::addParticle(int cls, const Vec3& pos, const Vec3& vel, const Ve
 
 void SlabSystem::computePairForces(double historyDt)
 {
-    if (rolling_) {
-        sumPairForces<true>(historyDt);
-    } else {
-        sumPairForces<false>(historyDt);
-    }
+    withContactLaw([&](auto law, auto rolling) {
+        sumPairForces<decltype(law), decltype(rolling)::value>(historyDt);
+    });
 }
 
-template <bool Rolling>
+template <class Law, bool Rolling>
 void SlabSystem::sumPairForces(double historyDt)
 {
     SlabParticles& p = p_;
@@ -183,7 +181,7 @@ void SlabSystem::sumPairForces(double historyDt)
                  + (g.rI * wI + g.rJ * wJ).cross(g.nHat);
         g.xiT = xiT[k];
         if constexpr (Rolling) g.omegaRel = wI - wJ;
-        const PairForce3 f = contactForce<3, Rolling>(g, laws[law[k]], historyDt);
+        const PairForce3 f = contactForce<3, Law, Rolling>(g, laws[law[k]], historyDt);
         xiT[k] = f.xiT;
         const Vec3 nxF = g.nHat.cross(f.ft);
         a.fx[i] += f.force.x(); a.fy[i] += f.force.y(); a.fz[i] += f.force.z();
@@ -237,14 +235,12 @@ void SlabSystem::sumPairForces(double historyDt)
 
 void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
 {
-    if (rolling_) {
-        addWallForcesAndKickWith<true>(historyDt, kick, fluid);
-    } else {
-        addWallForcesAndKickWith<false>(historyDt, kick, fluid);
-    }
+    withContactLaw([&](auto law, auto rolling) {
+        addWallForcesAndKickWith<decltype(law), decltype(rolling)::value>(historyDt, kick, fluid);
+    });
 }
 
-template <bool Rolling>
+template <class Law, bool Rolling>
 void SlabSystem::addWallForcesAndKickWith(double historyDt, bool kick, bool fluid)
 {
     const Index n = static_cast<Index>(p_.size());
@@ -316,7 +312,7 @@ void SlabSystem::addWallForcesAndKickWith(double historyDt, bool kick, bool flui
             c.rJ = 0.0;
             c.xiT = wXi[s];
             if constexpr (Rolling) c.omegaRel = p.spin(i);
-            const PairForce3 f = contactForce<3, Rolling>(c, wallLaws[p.classIndex[i]], historyDt);
+            const PairForce3 f = contactForce<3, Law, Rolling>(c, wallLaws[p.classIndex[i]], historyDt);
             p.fx[i] += f.force.x(); p.fy[i] += f.force.y(); p.fz[i] += f.force.z();
             p.tx[i] += f.torqueI.x(); p.ty[i] += f.torqueI.y(); p.tz[i] += f.torqueI.z();
             wXi[s] = f.xiT;
@@ -370,24 +366,25 @@ double SlabSystem::kineticEnergy() const
 double SlabSystem::elasticEnergy() const
 {
     double energy = 0.0;
-    for (std::size_t k = 0; k < pairs_.size(); ++k) {
-        const int i = pairs_.i[k];
-        const int j = pairs_.j[k];
-        const double overlap = p_.radius[i] + p_.radius[j] - (p_.position(j) - p_.position(i)).norm();
-        if (overlap > 0.0) {
-            const ContactLaw& law = pairLaws_[pairs_.law[k]];
-            energy += 0.5 * law.kn * overlap * overlap + 0.5 * law.kt * pairs_.xi[k].squaredNorm();
-        }
-    }
-    for (std::size_t i = 0; i + 1 < wallContacts_.start.size(); ++i) {
-        for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
-            const double overlap = p_.radius[i] - walls_[wallContacts_.wall[s]].distance(p_.position(i));
+    withContactLaw([&](auto lawType, auto) {
+        using Law = decltype(lawType);
+        for (std::size_t k = 0; k < pairs_.size(); ++k) {
+            const int i = pairs_.i[k];
+            const int j = pairs_.j[k];
+            const double overlap = p_.radius[i] + p_.radius[j] - (p_.position(j) - p_.position(i)).norm();
             if (overlap > 0.0) {
-                const ContactLaw& law = wallLaws_[p_.classIndex[i]];
-                energy += 0.5 * law.kn * overlap * overlap + 0.5 * law.kt * wallContacts_.xi[s].squaredNorm();
+                energy += Law::elasticEnergy(overlap, pairs_.xi[k], pairLaws_[pairs_.law[k]]);
             }
         }
-    }
+        for (std::size_t i = 0; i + 1 < wallContacts_.start.size(); ++i) {
+            for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
+                const double overlap = p_.radius[i] - walls_[wallContacts_.wall[s]].distance(p_.position(i));
+                if (overlap > 0.0) {
+                    energy += Law::elasticEnergy(overlap, wallContacts_.xi[s], wallLaws_[p_.classIndex[i]]);
+                }
+            }
+        }
+    });
     return energy;
 }
 
@@ -408,7 +405,9 @@ Vec3 SlabSystem::wallForce(int w) const
             c.rI = ri;
             c.rJ = 0.0;
             c.xiT = wallContacts_.xi[s];
-            total -= contactForce(c, wallLaws_[p_.classIndex[i]], 0.0).force;
+            withContactLaw([&](auto lawType, auto) {
+                total -= contactForce<3, decltype(lawType)>(c, wallLaws_[p_.classIndex[i]], 0.0).force;
+            });
         }
     }
     return total;

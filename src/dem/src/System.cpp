@@ -75,14 +75,12 @@ void System::addParticle(int cls, double x, double y, double vx, double vy, doub
 
 void System::computePairForces(double historyDt)
 {
-    if (rolling_) {
-        sumPairForces<true>(historyDt);
-    } else {
-        sumPairForces<false>(historyDt);
-    }
+    withContactLaw([&](auto law, auto rolling) {
+        sumPairForces<decltype(law), decltype(rolling)::value>(historyDt);
+    });
 }
 
-template <bool Rolling>
+template <class Law, bool Rolling>
 void System::sumPairForces(double historyDt)
 {
     const int* pi = pairs_.i.data();
@@ -125,7 +123,7 @@ void System::sumPairForces(double historyDt)
         g.rJ = r[j];
         g.xiT = xiT[k];
         if constexpr (Rolling) g.omegaRel = om[i] - om[j];
-        const PairForce f = contactForce<2, Rolling>(g, laws[law[k]], historyDt);
+        const PairForce f = contactForce<2, Law, Rolling>(g, laws[law[k]], historyDt);
         xiT[k] = f.xiT;
         sumFx[i] += f.force.x();
         sumFy[i] += f.force.y();
@@ -176,14 +174,12 @@ void System::sumPairForces(double historyDt)
 
 void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
 {
-    if (rolling_) {
-        addWallForcesAndKickWith<true>(historyDt, kick, fluid);
-    } else {
-        addWallForcesAndKickWith<false>(historyDt, kick, fluid);
-    }
+    withContactLaw([&](auto law, auto rolling) {
+        addWallForcesAndKickWith<decltype(law), decltype(rolling)::value>(historyDt, kick, fluid);
+    });
 }
 
-template <bool Rolling>
+template <class Law, bool Rolling>
 void System::addWallForcesAndKickWith(double historyDt, bool kick, bool fluid)
 {
     const Index n = static_cast<Index>(p_.size());
@@ -251,7 +247,7 @@ void System::addWallForcesAndKickWith(double historyDt, bool kick, bool fluid)
                 g.rJ = 0.0;
                 g.xiT = wXi[s];
                 if constexpr (Rolling) g.omegaRel = p.omega[i];
-                const PairForce f = contactForce<2, Rolling>(g, wallLaws[p.classIndex[i]], historyDt);
+                const PairForce f = contactForce<2, Law, Rolling>(g, wallLaws[p.classIndex[i]], historyDt);
                 fx += f.force.x();
                 fy += f.force.y();
                 torque += f.torqueI;
@@ -305,28 +301,28 @@ double System::kineticEnergy() const
 double System::elasticEnergy() const
 {
     double energy = 0.0;
-    for (std::size_t k = 0; k < pairs_.size(); ++k) {
-        const int i = pairs_.i[k];
-        const int j = pairs_.j[k];
-        const double dx = p_.x[j] - p_.x[i];
-        const double dy = p_.y[j] - p_.y[i];
-        const double overlap = p_.radius[i] + p_.radius[j] - std::sqrt(dx * dx + dy * dy);
-        if (overlap > 0.0) {
-            const ContactLaw& law = pairLaws_[pairs_.law[k]];
-            energy += 0.5 * law.kn * overlap * overlap + 0.5 * law.kt * pairs_.xi[k] * pairs_.xi[k];
-        }
-    }
-    for (std::size_t i = 0; i + 1 < wallContacts_.start.size(); ++i) {
-        for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
-            const Eigen::Vector2d pos(p_.x[i], p_.y[i]);
-            const double overlap = p_.radius[i] - walls_[wallContacts_.wall[s]].distance(pos);
+    withContactLaw([&](auto lawType, auto) {
+        using Law = decltype(lawType);
+        for (std::size_t k = 0; k < pairs_.size(); ++k) {
+            const int i = pairs_.i[k];
+            const int j = pairs_.j[k];
+            const double dx = p_.x[j] - p_.x[i];
+            const double dy = p_.y[j] - p_.y[i];
+            const double overlap = p_.radius[i] + p_.radius[j] - std::sqrt(dx * dx + dy * dy);
             if (overlap > 0.0) {
-                const ContactLaw& law = wallLaws_[p_.classIndex[i]];
-                energy += 0.5 * law.kn * overlap * overlap
-                          + 0.5 * law.kt * wallContacts_.xi[s] * wallContacts_.xi[s];
+                energy += Law::elasticEnergy(overlap, pairs_.xi[k], pairLaws_[pairs_.law[k]]);
             }
         }
-    }
+        for (std::size_t i = 0; i + 1 < wallContacts_.start.size(); ++i) {
+            for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
+                const Eigen::Vector2d pos(p_.x[i], p_.y[i]);
+                const double overlap = p_.radius[i] - walls_[wallContacts_.wall[s]].distance(pos);
+                if (overlap > 0.0) {
+                    energy += Law::elasticEnergy(overlap, wallContacts_.xi[s], wallLaws_[p_.classIndex[i]]);
+                }
+            }
+        }
+    });
     return energy;
 }
 

@@ -28,18 +28,52 @@ inline Settings paperSettings(const Box& box, double dt = 1e-5)
     return s;
 }
 
-/// Contact duration of a linear spring-dashpot, written here from model.md so the tests do
-/// not take it from the library: t_c = pi / sqrt(kn/mEff - (eta/(2 mEff))^2),
-/// eta = 2 sqrt(mEff kn) |ln e| / sqrt(pi^2 + ln^2 e).
+/// Head-on contact of the linear spring-dashpot with its normal force clamped at zero,
+/// written here from the damped oscillator so the tests do not take it from the library:
+/// with time in 1/omega0 (omega0 = sqrt(kn/mEff)), zeta = eta/(2 sqrt(mEff kn)) and the
+/// overlap x(0) = 0, x'(0) = 1, the particles part when the force x + 2 zeta x' vanishes
+/// (Schwager and Poeschel 2007, Granul. Matter 9:465). End of the contact and rebound speed:
+struct ClampedContactEnd {
+    double time;          ///< in 1/omega0
+    double restitution;   ///< -x' at that time
+};
+inline ClampedContactEnd clampedContactEnd(double zeta)
+{
+    if (zeta == 0.0) return {pi, 1.0};
+    if (std::abs(zeta - 1.0) < 1e-9) {   // x = t exp(-t): x + 2x' = (2 - t) exp(-t)
+        return {2.0, std::exp(-2.0)};
+    }
+    if (zeta < 1.0) {   // x = exp(-zeta t) sin(q t)/q: tan(q t) = -2 zeta q/(1 - 2 zeta^2)
+        const double q = std::sqrt(1.0 - zeta * zeta);
+        double qt = std::atan(-2.0 * zeta * q / (1.0 - 2.0 * zeta * zeta));
+        if (qt <= 0.0) qt += pi;   // the first root after the start
+        const double t = qt / q;
+        return {t, -std::exp(-zeta * t) * (std::cos(qt) - zeta / q * std::sin(qt))};
+    }
+    // x = exp(-zeta t) sinh(s t)/s: tanh(s t) = 2 zeta s/(2 zeta^2 - 1)
+    const double sq = std::sqrt(zeta * zeta - 1.0);
+    const double st = std::atanh(2.0 * zeta * sq / (2.0 * zeta * zeta - 1.0));
+    const double t = st / sq;
+    return {t, -std::exp(-zeta * t) * (std::cosh(st) - zeta / sq * std::sinh(st))};
+}
+
+/// The damping eta that gives restitution e under the clamped law (bisection on zeta: e
+/// falls monotonically with it), N s/m.
 inline double etaFor(double mEff, double kn, double e)
 {
-    const double l = std::log(e);
-    return 2.0 * std::sqrt(mEff * kn) * std::abs(l) / std::sqrt(pi * pi + l * l);
+    double low = 0.0, high = 64.0;
+    for (int k = 0; k < 200; ++k) {
+        const double mid = 0.5 * (low + high);
+        (clampedContactEnd(mid).restitution > e ? low : high) = mid;
+    }
+    return 2.0 * std::sqrt(mEff * kn) * 0.5 * (low + high);
 }
+
+/// Duration of the clamped head-on contact at restitution e, s.
 inline double contactTime(double mEff, double kn, double e)
 {
-    const double a = etaFor(mEff, kn, e) / (2.0 * mEff);
-    return pi / std::sqrt(kn / mEff - a * a);
+    const double zeta = etaFor(mEff, kn, e) / (2.0 * std::sqrt(mEff * kn));
+    return clampedContactEnd(zeta).time * std::sqrt(mEff / kn);
 }
 
 } // namespace dem::test

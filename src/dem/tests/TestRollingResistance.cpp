@@ -147,14 +147,14 @@ TEST(RollingResistance, PairTorqueIsMuRTimesRollingRadiusTimesNormalForceAndOppo
     const double full = muR * ri * rj / (ri + rj) * fn;
 
     PairGeometry g2{overlap, {1.0, 0.0}, {0.0, 0.0}, ri, rj, 0.0, 5.0};
-    const PairForce f2 = contactForce<2, true>(g2, law, dt);
+    const PairForce f2 = contactForce<2, LinearSpringDashpot, true>(g2, law, dt);
     EXPECT_NEAR(f2.rollingTorque, -full, 1e-12 * full);
     EXPECT_NEAR(f2.torqueI - ri * f2.ft, -full, 1e-12 * full);
     EXPECT_NEAR(f2.torqueJ - rj * f2.ft, full, 1e-12 * full);
 
     const double slow = 1e-3 * full * rollingStopSteps * dt * (1 / ii + 1 / ij);
     g2.omegaRel = -slow;
-    const double clamped = contactForce<2, true>(g2, law, dt).rollingTorque;
+    const double clamped = contactForce<2, LinearSpringDashpot, true>(g2, law, dt).rollingTorque;
     EXPECT_NEAR(clamped, slow / (rollingStopSteps * dt * (1 / ii + 1 / ij)), 1e-9 * full);
 
     // 3D: the twist about nHat is not rolling; the rolling part (0, 3, 4) gets the torque
@@ -166,7 +166,7 @@ TEST(RollingResistance, PairTorqueIsMuRTimesRollingRadiusTimesNormalForceAndOppo
     g3.rJ = rj;
     g3.xiT.setZero();
     g3.omegaRel = Eigen::Vector3d(7.0, 3.0, 4.0);
-    const PairForce3 f3 = contactForce<3, true>(g3, law, dt);
+    const PairForce3 f3 = contactForce<3, LinearSpringDashpot, true>(g3, law, dt);
     const Eigen::Vector3d expected = -full * Eigen::Vector3d(0.0, 0.6, 0.8);
     EXPECT_LT((f3.rollingTorque - expected).norm(), 1e-12 * full);
     EXPECT_LT((f3.torqueI + f3.torqueJ).norm(), 1e-12 * full);   // no tangential force here

@@ -90,7 +90,9 @@ dem::Settings Foam::dpmCloud::demSettings() const
         (
             dem::ParticleClass
             {
-                name, c.get<scalar>("diameter"), c.get<scalar>("density")
+                name, c.get<scalar>("diameter"), c.get<scalar>("density"),
+                c.lookupOrDefault<scalar>("youngsModulus", 0),
+                c.lookupOrDefault<scalar>("poissonRatio", 0)
             }
         );
         if (s.classes.back().diameter > min(grid_.dx(), grid_.dy()))
@@ -106,6 +108,25 @@ dem::Settings Foam::dpmCloud::demSettings() const
 
     const dictionary& contact = dict_.subOrEmptyDict("contact");
     dem::ContactSettings& cs = s.contact;
+    const word law =
+        contact.lookupOrDefault<word>("contactLaw", dem::contactLawName(cs.law));
+    try
+    {
+        cs.law = dem::contactLawFromName(law);
+    }
+    catch (const dem::Error&)
+    {
+        FatalIOErrorInFunction(contact)
+            << "Entry 'contactLaw' = " << law << " in " << contact.name()
+            << " is not allowed; allowed: linear (the paper's, default) or"
+            << " HertzMindlin (docs/model.md, \"The Hertz-Mindlin law\")"
+            << exit(FatalIOError);
+    }
+    cs.wallYoungsModulus =
+        contact.lookupOrDefault<scalar>("wallYoungsModulus", cs.wallYoungsModulus);
+    cs.wallPoissonRatio =
+        contact.lookupOrDefault<scalar>("wallPoissonRatio", cs.wallPoissonRatio);
+    cs.impactSpeed = contact.lookupOrDefault<scalar>("impactSpeed", cs.impactSpeed);
     cs.kn = contact.lookupOrDefault<scalar>("kn", cs.kn);
     cs.kt = contact.lookupOrDefault<scalar>("kt", cs.kt);
     cs.restitution = contact.lookupOrDefault<scalar>("restitution", cs.restitution);
@@ -114,6 +135,11 @@ dem::Settings Foam::dpmCloud::demSettings() const
     cs.frictionParticle =
         contact.lookupOrDefault<scalar>("frictionParticle", cs.frictionParticle);
     cs.frictionWall = contact.lookupOrDefault<scalar>("frictionWall", cs.frictionWall);
+    cs.tangentialDampingRatio =
+        contact.lookupOrDefault<scalar>
+        (
+            "tangentialDampingRatio", cs.tangentialDampingRatio
+        );
     cs.rollingFriction =
         contact.lookupOrDefault<scalar>("rollingFriction", cs.rollingFriction);
     cs.rollingFrictionWall =

@@ -3,7 +3,9 @@
 #pragma once
 // The pair-force arithmetic, shared by particle-particle and particle-wall contacts and by
 // the 2D mode (discs in the x-y plane) and the slab mode (3D spheres), templated on the
-// dimension. Stateless: geometry and stored history in, force, torques and new history out.
+// dimension and on the contact law (LinearSpringDashpot, HertzMindlin), which the engines
+// choose once at set-up. Stateless: geometry and stored history in, force, torques and new
+// history out.
 
 #include "dem/ContactLaw.hpp"
 
@@ -77,13 +79,59 @@ inline Eigen::Vector3d selectWithoutBranch(bool c, const Eigen::Vector3d& a,
             selectWithoutBranch(c, a.z(), b.z())};
 }
 
-/// Normal force magnitude kn delta + etaN vn (vn > 0 approaching); F_n = -fn nHat on i.
-/// No clamp of the tensile part near the end of the contact: the exact restitution of
-/// eta_n(e) assumes the unclamped law.
+/// Normal force magnitude max(kn delta + etaN vn, 0) (vn > 0 approaching); F_n = -fn nHat on
+/// i. Clamped at zero: the dashpot does not pull the particles together before they part,
+/// so friction and rolling resistance, limited by fn, act only while they are pressed
+/// (etaN is the damping that gives e with the clamp, dampingFromRestitution).
 inline double normalForce(double overlap, double vn, const ContactLaw& law)
 {
-    return law.kn * overlap + law.etaN * vn;
+    return std::max(law.kn * overlap + law.etaN * vn, 0.0);
 }
+
+/// What a law gives one contact: the normal force magnitude (F_n = -fn nHat on i, >= 0) and
+/// the tangential spring and dashpot at its overlap.
+struct ContactStiffness {
+    double fn;     ///< N
+    double kt;     ///< N/m
+    double etaT;   ///< N s/m
+};
+
+/// Half the spring energy kt xi^2 of a tangential history (2D: a scalar; 3D: a vector), J.
+inline double springEnergy(double kt, double xi) { return 0.5 * kt * xi * xi; }
+inline double springEnergy(double kt, const Eigen::Vector3d& xi) { return 0.5 * kt * xi.squaredNorm(); }
+
+/// The paper's linear spring-dashpot: constant kn, kt, etaN, etaT (model.md, "Particles").
+struct LinearSpringDashpot {
+    static ContactStiffness at(double overlap, double vn, const ContactLaw& law)
+    {
+        return {normalForce(overlap, vn, law), law.kt, law.etaT};
+    }
+    template <class History>
+    static double elasticEnergy(double overlap, const History& xi, const ContactLaw& law)
+    {
+        return 0.5 * law.kn * overlap * overlap + springEnergy(law.kt, xi);
+    }
+};
+
+/// Hertz's normal force and Mindlin and Deresiewicz's tangential stiffness (model.md, "The
+/// Hertz-Mindlin law"): F_n = max(Kn delta^3/2 + etaN' delta^1/4 v_n, 0) (Tsuji et al.
+/// 1992's damping, its coefficient solved for the restitution), kt = Kt' delta^1/2,
+/// eta_t = etaT' delta^1/4.
+struct HertzMindlin {
+    static ContactStiffness at(double overlap, double vn, const ContactLaw& law)
+    {
+        const double root = std::sqrt(overlap);     // delta^1/2
+        const double quarter = std::sqrt(root);     // delta^1/4
+        const double fn = std::max(law.hertzKn * overlap * root + law.hertzEtaN * quarter * vn, 0.0);
+        return {fn, law.mindlinKt * root, law.mindlinEtaT * quarter};
+    }
+    template <class History>
+    static double elasticEnergy(double overlap, const History& xi, const ContactLaw& law)
+    {
+        const double root = std::sqrt(overlap);
+        return 0.4 * law.hertzKn * overlap * overlap * root + springEnergy(law.mindlinKt * root, xi);
+    }
+};
 
 /// Constant-torque rolling resistance (Ai et al. 2011, type A; model.md, "Rolling
 /// resistance"): a torque of magnitude mu_r R_r Fn against the relative rolling w_r, clamped
@@ -93,7 +141,7 @@ template <int Dim>
 [[gnu::always_inline]] inline typename ContactTypes<Dim>::Rotational
 rollingTorque(const PairGeometryT<Dim>& g, double fn, const ContactLaw& law)
 {
-    const double limit = law.rollingTorquePerForce * std::max(fn, 0.0);
+    const double limit = law.rollingTorquePerForce * fn;
     if constexpr (Dim == 2) {
         const double m = std::min(limit, law.rollingTorquePerSpin * std::abs(g.omegaRel));
         return -std::copysign(m, g.omegaRel);
@@ -105,22 +153,22 @@ rollingTorque(const PairGeometryT<Dim>& g, double fn, const ContactLaw& law)
     }
 }
 
-/// Linear spring-dashpot with Coulomb friction (docs/theory/paper-model.md, "Particles").
+/// A contact under Law (LinearSpringDashpot or HertzMindlin) with Coulomb friction.
 ///
 /// The tangential spring lives in the tangent plane of the contact. In 3D the stored
 /// displacement is first turned into the current tangent plane (its component along nHat
 /// removed, its length kept), then the tangential relative displacement of the step is
 /// added. In 2D the tangent "plane" is the line tHat = ez x nHat and the history is the
 /// scalar component along tHat, so it turns with the normal by construction.
-/// When the trial force (spring + dashpot) exceeds mu |Fn| the contact slides: the force is
+/// When the trial force (spring + dashpot) exceeds mu Fn the contact slides: the force is
 /// set to the limit and the stored displacement is reset so that the spring alone carries it,
-/// xi = -Ft/kt. Dashpot velocity is the one passed in vRel. dt = 0 evaluates without
+/// xi = -Ft/kt (kt and eta_t those of the law at the current overlap). Dashpot velocity is the one passed in vRel. dt = 0 evaluates without
 /// accumulating history. Torques: (r_i nHat) x Ft on i and (r_j nHat) x Ft on j (its lever
 /// arm -r_j nHat times its force -Ft). With Rolling, the rolling torque is added to both
 /// (rollingTorque on i, its opposite on j) and returned apart in rollingTorque.
 /// Always inlined: GCC's size heuristics kept the 3D kernel out of line, called through
 /// the shared library's PLT from every pair loop (40 % of a slab run's samples in the call).
-template <int Dim, bool Rolling = false>
+template <int Dim, class Law = LinearSpringDashpot, bool Rolling = false>
 [[gnu::always_inline]] inline PairForceT<Dim> contactForce(const PairGeometryT<Dim>& g, const ContactLaw& law, double dt)
 {
     PairForceT<Dim> out;
@@ -129,14 +177,15 @@ template <int Dim, bool Rolling = false>
         const Eigen::Vector2d tHat(-g.nHat.y(), g.nHat.x());
         const double vn = g.vRel.dot(g.nHat);     // > 0 approaching
         const double vt = g.vRel.dot(tHat);
-        const double fn = normalForce(g.overlap, vn, law);
+        const ContactStiffness c = Law::at(g.overlap, vn, law);
+        const double fn = c.fn;
         const double xiTrial = g.xiT + vt * dt;
-        const double trial = -law.kt * xiTrial - law.etaT * vt;
-        const double limit = law.mu * std::abs(fn);
+        const double trial = -c.kt * xiTrial - c.etaT * vt;
+        const double limit = law.mu * fn;
         // Sliding picked without a branch, both outcomes computed: contacts start and end
         // sliding unpredictably in a bubbling bed
         const double capped = std::copysign(limit, trial);
-        const double xiCapped = -capped / law.kt;
+        const double xiCapped = -capped / c.kt;
         const bool slides = std::abs(trial) > limit;
         const double ft = selectWithoutBranch(slides, capped, trial);
         const double xiT = selectWithoutBranch(slides, xiCapped, xiTrial);
@@ -153,8 +202,9 @@ template <int Dim, bool Rolling = false>
         }
     } else {
         const double vn = g.vRel.dot(g.nHat);
-        const double fn = normalForce(g.overlap, vn, law);
-        const double limit = law.mu * std::abs(fn);
+        const ContactStiffness c = Law::at(g.overlap, vn, law);
+        const double fn = c.fn;
+        const double limit = law.mu * fn;
         const Eigen::Vector3d vt = g.vRel - vn * g.nHat;
         // Turn the stored displacement into the current tangent plane, keeping its length.
         Eigen::Vector3d xi = g.xiT - g.xiT.dot(g.nHat) * g.nHat;
@@ -162,11 +212,11 @@ template <int Dim, bool Rolling = false>
         const double after2 = xi.squaredNorm();
         if (after2 > 0.0 && after2 != before2) xi *= std::sqrt(before2 / after2);
         xi += vt * dt;
-        Eigen::Vector3d ft = -law.kt * xi - law.etaT * vt;
+        Eigen::Vector3d ft = -c.kt * xi - c.etaT * vt;
         const double ft2 = ft.squaredNorm();
         if (ft2 > limit * limit) {
             ft *= limit / std::sqrt(ft2);
-            xi = -ft / law.kt;
+            xi = -ft / c.kt;
         }
         out.force = -fn * g.nHat + ft;
         const Eigen::Vector3d nxF = g.nHat.cross(ft);

@@ -18,6 +18,7 @@
 //   static axes(p)                              per axis: pointers to x, xRef, v, gasV,
 //                                               extraF, fluid, meanV, meanFluid (AxisArrays)
 
+#include "dem/ContactKernel.hpp"
 #include "dem/ContactLaw.hpp"
 #include "dem/ContactList.hpp"
 #include "dem/Facade.hpp"
@@ -27,6 +28,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace dem {
@@ -122,6 +124,20 @@ protected:
     /// Sets the skin and the search cells that fit it.
     void setSkin(double skin);
     void setFluidForceAtCurrentVelocity(bool fluid);
+    /// body(Law{}, std::bool_constant<Rolling>{}) with the contact law (LinearSpringDashpot or
+    /// HertzMindlin) and the rolling resistance of the settings: the engines' contact loops
+    /// are compiled once per law and chosen here once per loop, not per contact.
+    template <class Body>
+    void withContactLaw(const Body& body) const
+    {
+        if (hertzMindlin_) {
+            if (rolling_) body(HertzMindlin{}, std::true_type{});
+            else body(HertzMindlin{}, std::false_type{});
+        } else {
+            if (rolling_) body(LinearSpringDashpot{}, std::true_type{});
+            else body(LinearSpringDashpot{}, std::false_type{});
+        }
+    }
     /// body(first, last) on each thread for its share of the particles.
     template <class Body>
     void forEachShare(const Body& body);
@@ -151,6 +167,7 @@ protected:
     std::vector<ContactLaw> pairLaws_;   // nClasses x nClasses
     std::vector<ContactLaw> wallLaws_;   // per class
     bool rolling_ = false;               // some law has rolling resistance: its loops run
+    bool hertzMindlin_ = false;          // ContactSettings::law is HertzMindlin
     ParticleArrays p_;
     PairListT<History> pairs_;
     WallListT<History> wallContacts_;

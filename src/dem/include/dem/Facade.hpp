@@ -19,12 +19,26 @@ struct ParticleClass {
     std::string name;
     double diameter;   ///< m
     double density;    ///< kg/m^3
+    double youngsModulus = 0.0;   ///< Pa, > 0 under HertzMindlin (not read by the linear law)
+    double poissonRatio = 0.0;    ///< in (-1, 0.5] under HertzMindlin
 };
 
-/// Linear spring-dashpot contact coefficients (docs/theory/paper-model.md, "Particles").
+/// The contact law, chosen once for every contact (model.md): the paper's linear
+/// spring-dashpot, or Hertz-Mindlin from the materials' Young's moduli and Poisson's ratios.
+enum class ContactLawType { linear, hertzMindlin };
+
+/// "linear" or "HertzMindlin".
+std::string contactLawName(ContactLawType law);
+/// The law of that name; dem::Error naming the allowed names otherwise.
+ContactLawType contactLawFromName(const std::string& name);
+
+/// Contact coefficients (docs/theory/paper-model.md, "Particles"; docs/model.md).
 struct ContactSettings {
+    ContactLawType law = ContactLawType::linear;
     double kn = 800.0;                 ///< normal stiffness, N/m
     double kt = -1.0;                  ///< tangential stiffness, N/m; < 0 means 2/7 kn
+    /// Tangential damping over the normal one, eta_t/eta_n, >= 0 (1: the paper's one eta).
+    double tangentialDampingRatio = 1.0;
     double restitution = 0.97;         ///< particle-particle, in (0, 1]
     double restitutionWall = 0.97;     ///< particle-wall, in (0, 1]
     double frictionParticle = 0.15;    ///< sliding friction particle-particle, >= 0
@@ -33,6 +47,11 @@ struct ContactSettings {
     /// mu_r R_r Fn against the relative rolling (model.md, "Rolling resistance").
     double rollingFriction = 0.0;
     double rollingFrictionWall = 0.0;  ///< rolling resistance particle-wall, >= 0
+    double wallYoungsModulus = 0.0;    ///< HertzMindlin: the walls' Young's modulus, Pa, > 0
+    double wallPoissonRatio = 0.0;     ///< HertzMindlin: the walls' Poisson's ratio, (-1, 0.5]
+    /// HertzMindlin: the largest normal impact speed expected, m/s, > 0. A Hertz contact
+    /// shortens as v^-1/5: the step bounds take the contact time at this speed.
+    double impactSpeed = 1.0;
 };
 
 /// The domain: four plane walls x = xMin, x = xMax, y = yMin, y = yMax (m).
@@ -97,10 +116,15 @@ std::string bedDifferences(const Settings& settings, const BedRecipe& inFile,
 std::string streamingLoopsInUse();
 
 /// Eq. 7 time-step bound (2 pi/5) sqrt(m_min/kn) over the classes, s; smallest class in `cls`.
+/// HertzMindlin: the least (2 pi/5) sqrt(m/S) over the pairs of classes and the walls, m the
+/// lighter particle's mass and S = 2 E* sqrt(R* delta_max) Hertz's stiffness at the peak
+/// overlap of an impact at impactSpeed; `cls` the lighter class of that contact.
 double timeStepBound(const Settings& settings, int* smallestClass = nullptr);
 
-/// Contact duration t_c of the linear spring-dashpot for a pair of the lightest class, with
-/// the particle restitution, s: the shortest contact (a wall's has twice the mass).
+/// Contact duration t_c for a pair of the lightest class, with the particle restitution, s:
+/// under the linear law the shortest contact (a wall's has twice the mass), until the
+/// clamped force vanishes. HertzMindlin: the shortest of Hertz's elastic contact times at
+/// impactSpeed over the pairs of classes and the walls.
 double pairContactTime(const Settings& settings);
 
 /// The DEM step's measured bounds (docs/model.md, "The DEM step's bound"), as fractions of

@@ -135,8 +135,8 @@ private:
     void computePairForces(double historyDt);
     void addWallForcesAndKick(double historyDt, bool kick, bool fluid);
     /// The two loops with or without rolling resistance, chosen once per step.
-    template <bool Rolling> void sumPairForces(double historyDt);
-    template <bool Rolling> void addWallForcesAndKickWith(double historyDt, bool kick, bool fluid);
+    template <class Law, bool Rolling> void sumPairForces(double historyDt);
+    template <class Law, bool Rolling> void addWallForcesAndKickWith(double historyDt, bool kick, bool fluid);
     [[noreturn]] void throwLostParticle() const;
 
     std::vector<int> touchingScratch_;   // the touching pairs of each group, per step

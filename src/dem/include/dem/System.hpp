@@ -78,8 +78,8 @@ private:
     /// only the forces, for the first evaluation).
     void addWallForcesAndKick(double historyDt, bool kick, bool fluid);
     /// The two loops with or without rolling resistance, chosen once per step.
-    template <bool Rolling> void sumPairForces(double historyDt);
-    template <bool Rolling> void addWallForcesAndKickWith(double historyDt, bool kick, bool fluid);
+    template <class Law, bool Rolling> void sumPairForces(double historyDt);
+    template <class Law, bool Rolling> void addWallForcesAndKickWith(double historyDt, bool kick, bool fluid);
     [[noreturn]] void throwLostParticle() const;
 
     static constexpr double skinStartFraction = 0.4;   // of d_min, the adaptive skin's start

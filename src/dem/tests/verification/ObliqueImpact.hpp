@@ -13,9 +13,34 @@ namespace dem::verification {
 
 struct Material {
     double d, rho;       // m, kg/m^3
-    double kn, kt;       // N/m (kt < 0: the library's 2/7 kn)
+    double kn, kt;       // N/m (kt < 0: the library's 2/7 kn); the linear law's
     double e, mu;
+    double youngs = 0.0;    // Pa; > 0: the HertzMindlin law, on a rigid wall
+    double poisson = 0.0;
 };
+
+/// The contact law of `mat` in `s`: HertzMindlin on a rigid wall if it has a Young's
+/// modulus, else the linear law with its kn and kt.
+inline void setLaw(Settings& s, const Material& mat)
+{
+    if (mat.youngs > 0.0) {
+        setHertzMindlin(s, mat.youngs, mat.poisson);
+    } else {
+        s.contact.kn = mat.kn;
+        s.contact.kt = mat.kt;
+    }
+}
+
+/// Duration of mat's head-on contact on the wall at normal speed vn (the linear law's does
+/// not depend on it), s.
+inline double wallContactTime(const Material& mat, double vn)
+{
+    const double m = sphereMass(mat.d, mat.rho);
+    if (mat.youngs > 0.0) {
+        return hertzImpactDuration(m, 0.5 * mat.d, mat.youngs / (1.0 - mat.poisson * mat.poisson), vn);
+    }
+    return contactTime(m, mat.kn, mat.e);
+}
 
 /// The state after the impact, in the wall's frame.
 struct Rebound {
@@ -31,9 +56,8 @@ inline Rebound wallImpact(int dimension, const Material& mat, double vt, double 
     const double r = 0.5 * mat.d;
     const double size = 20.0 * mat.d;   // box half-width: far from the sphere's path
     Settings s = oneClass(mat.d, mat.rho, {-size, size, -size, size}, dimension, 6.0 * mat.d, 1.0);
-    s.dt = contactTime(sphereMass(mat.d, mat.rho), mat.kn, mat.e) / stepsPerContact;
-    s.contact.kn = mat.kn;
-    s.contact.kt = mat.kt;
+    s.dt = wallContactTime(mat, vn) / stepsPerContact;
+    setLaw(s, mat);
     s.contact.restitutionWall = mat.e;
     s.contact.frictionWall = mat.mu;
     const double gap = 10.0 * vn * s.dt + 1e-9 * r;   // touch after ~10 steps, off the step grid

@@ -5,6 +5,7 @@
 // size class in either engine through the facade, and a particle placed and read as 3-vectors
 // in both engines (the 2D engine's discs move in the x-y plane and spin about z).
 
+#include "TestHelpers.hpp"
 #include "dem/Facade.hpp"
 
 #include <Eigen/Core>
@@ -106,15 +107,37 @@ inline Settings oneClass(double d, double rho, const Box& box, int dimension, do
 
 inline double sphereMass(double d, double rho) { return rho * pi * d * d * d / 6.0; }
 
-/// Damping and duration of a head-on linear spring-dashpot contact, written here from the
-/// textbook solution of the damped oscillator (not taken from the library):
-/// eta = 2 sqrt(mEff kn) |ln e| / sqrt(pi^2 + ln^2 e), t_c = pi / sqrt(kn/mEff - (eta/2mEff)^2).
+/// Duration of a head-on contact of the linear spring-dashpot, its normal force clamped at
+/// zero, at restitution e (TestHelpers.hpp, from the damped oscillator, not the library), s.
 inline double contactTime(double mEff, double kn, double e)
 {
-    const double l = std::log(e);
-    const double eta = 2.0 * std::sqrt(mEff * kn) * std::abs(l) / std::sqrt(pi * pi + l * l);
-    const double a = eta / (2.0 * mEff);
-    return pi / std::sqrt(kn / mEff - a * a);
+    return ::dem::test::contactTime(mEff, kn, e);
+}
+
+/// Hertz's elastic contact time of a head-on impact at normal speed v (Johnson 1985, Contact
+/// Mechanics, section 11.4, written here from it): 2.94320 delta_max/v with
+/// delta_max = (15 mEff v^2/(16 E* sqrt(R*)))^2/5, s.
+inline double hertzPeakOverlap(double mEff, double rEff, double eStar, double v)
+{
+    return std::pow(15.0 * mEff * v * v / (16.0 * eStar * std::sqrt(rEff)), 0.4);
+}
+inline double hertzImpactDuration(double mEff, double rEff, double eStar, double v)
+{
+    return 2.94320 * hertzPeakOverlap(mEff, rEff, eStar, v) / v;
+}
+
+/// The HertzMindlin law in `s`: every class of Young's modulus `youngs` and Poisson's ratio
+/// `poisson`, on rigid walls (a Young's modulus 1e20 times the particles').
+inline void setHertzMindlin(Settings& s, double youngs, double poisson)
+{
+    s.contact.law = ContactLawType::hertzMindlin;
+    for (ParticleClass& c : s.classes) {
+        c.youngsModulus = youngs;
+        c.poissonRatio = poisson;
+    }
+    s.contact.wallYoungsModulus = 1e20 * youngs;
+    s.contact.wallPoissonRatio = poisson;
+    s.contact.kt = -1.0;
 }
 
 /// A particle placed and read as 3-vectors through the facade, in either engine.
