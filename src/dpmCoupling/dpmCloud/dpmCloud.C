@@ -219,8 +219,8 @@ Foam::dpmCloud::dpmCloud
     g_(g),
     classNames_(dict_.subDict("classes").toc()),
     drag_(dragModel::New(dict_, gas.rho(), gas.mu())),
-    formulation_(readCouplingFormulation(dict_)),
-    schedule_(readCouplingSchedule(dict_)),
+    formulation_(couplingFormulation::New(dict_)),
+    schedule_(couplingSchedule::New(dict_)),
     couplingThreads_(1),
     exchangeReady_(false),
     frozen_(dict_.lookupOrDefault<bool>("frozen", false)),
@@ -277,8 +277,8 @@ Foam::dpmCloud::dpmCloud
     ),
     dtStep_(mesh.time().deltaTValue())
 {
-    Info<< "Coupling: " << formulationDescription(formulation_).c_str()
-        << nl << "Coupling: " << scheduleDescription(schedule_).c_str()
+    Info<< "Coupling: " << formulation_->description().c_str()
+        << nl << "Coupling: " << schedule_->description().c_str()
         << nl << "Coupling: " << voidageModel_->description().c_str()
         << endl;
 
@@ -307,14 +307,15 @@ Foam::dpmCloud::dpmCloud
         << dem::streamingLoopsInUse().c_str()
         << " (environment variable DEM_SIMD = baseline or avx2 chooses;"
         << " the same bits)" << endl;
-    couplingThreads_ =
-        settings.nThreads
-      + (schedule_ == couplingSchedule::concurrent ? 1 : 0);
+    couplingThreads_ = settings.nThreads + schedule_->gasThreads();
     drag_->setThreads(couplingThreads_);
     checkSettings(gas, mode);
 
     subSteps();         // the DEM step must divide the CFD step
-    warnThinSlab();
+    formulation_->checkBedDepth
+    (
+        dict_, grid_, classDiameters(), slab_, voidageMin_
+    );
     initialise(mode);
     if (mode == startMode::run)
     {

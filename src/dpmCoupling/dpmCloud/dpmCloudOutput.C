@@ -74,9 +74,11 @@ void Foam::dpmCloud::writeStartParticles(const volVectorField& U)
 void Foam::dpmCloud::reportBalance(Ostream& os) const
 {
     vector particleForce = Zero;
-    for (label i = 0; i < size(); ++i)
+    if (K_.size() == size())
     {
-        if (K_.size() == size()) particleForce += exchangedForce(i);
+        vectorField F;
+        exchangedForces(F);
+        for (const vector& Fi : F) particleForce += Fi;
     }
     const vector gasForce = gSum(Fp_.primitiveField())*grid_.cellVolume();
 
