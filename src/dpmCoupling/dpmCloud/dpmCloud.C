@@ -138,10 +138,7 @@ dem::Settings Foam::dpmCloud::demSettings() const
         }
         s.neighbourSkin = boundedEntry(dict_, "neighbourSkin", 0, dMin, true);
     }
-    if (slab_)
-    {
-        slabSettings(s);
-    }
+    particleModel_.selectEngine(s, grid_);
     return s;
 }
 
@@ -237,8 +234,8 @@ Foam::dpmCloud::dpmCloud
     ),
     writeInterval_(positiveEntry(dict_, "writeInterval", 0.01)),
     voidageMin_(boundedEntryOrDefault(dict_, "voidageMin", 0.1, 0, 1, true)),
-    voidageModel_(voidageModel::New(dict_, grid_, voidageMin_)),
-    slab_(voidageModel_->particleDimension() == 3),
+    particleModel_(dict_, grid_, voidageMin_),
+    slab_(particleModel_.slab()),
     voidage_
     (
         fieldIO("voidage", mesh, mode == startMode::run),
@@ -279,8 +276,8 @@ Foam::dpmCloud::dpmCloud
 {
     Info<< "Coupling: " << formulation_->description().c_str()
         << nl << "Coupling: " << schedule_->description().c_str()
-        << nl << "Coupling: " << voidageModel_->description().c_str()
-        << endl;
+        << nl << "Coupling: "
+        << particleModel_.voidage().description().c_str() << endl;
 
     if (classNames_.size() < 1)
     {
@@ -296,7 +293,7 @@ Foam::dpmCloud::dpmCloud
     const dem::Settings settings = demSettings();
     // The voidage model's own check first (slab3D: the spheres fit in the
     // slab), in its words rather than the DEM's
-    voidageModel_->checkDiameters(dict_, diametersOf(settings));
+    particleModel_.voidage().checkDiameters(dict_, diametersOf(settings));
     checkDemStep(settings);
     guarded
     (

@@ -169,9 +169,9 @@ void Foam::dpmCloud::exchangeToGas()
     Fp = Zero;
     vectorField exchanged;
     exchangedForces(exchanged);
-    const labelList& counts = voidageModel_->counts();
-    const labelList& cells = voidageModel_->cells();
-    const scalarList& fractions = voidageModel_->fractions();
+    const labelList& counts = particleModel_.voidage().counts();
+    const labelList& cells = particleModel_.voidage().cells();
+    const scalarList& fractions = particleModel_.voidage().fractions();
     for (label i = 0; i < n; ++i)
     {
         const vector& F = exchanged[i];
@@ -197,7 +197,7 @@ void Foam::dpmCloud::exchangeToGas()
 
 void Foam::dpmCloud::updateOverlaps()
 {
-    voidageModel_->updateOverlaps
+    particleModel_.voidage().updateOverlaps
     (
         size(), dem_->x(), dem_->y(), dem_->diameter(),
         couplingThreads_
@@ -208,7 +208,7 @@ void Foam::dpmCloud::updateOverlaps()
 void Foam::dpmCloud::updateVoidage()
 {
     updateOverlaps();
-    voidageModel_->updateFields
+    particleModel_.voidage().updateFields
     (
         size(), dem_->diameter(),
         voidage_.primitiveFieldRef(), particleFraction_.primitiveFieldRef()

@@ -84,7 +84,7 @@ void Foam::dpmCloud::reportBalance(Ostream& os) const
 
     os  << "Exchange: force on particles " << particleForce
         << " N, reaction mapped to the gas " << gasForce << " N" << nl;
-    voidageModel_->reportBalance
+    particleModel_.voidage().reportBalance
     (
         os, size(), dem_->diameter(), particleFraction_.primitiveField()
     );
