@@ -122,60 +122,21 @@ int main(int argc, char *argv[])
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
-        if (particles.concurrentStep())
-        {
-            // The particles' voidage and reaction of the last step for the
-            // gas, the gas at the particles; then the DEM advances on a
-            // thread of its own while the gas advances on this one
-            timers.start();
-            particles.updateVoidage();
-            #include "interpolateVoidage.H"
-            particles.interpolateGas(U, p_rgh);
-            timers.stop(solverTimers::coupling);
-
-            timers.start();
-            particles.advanceBeside
-            (
-                [&]
-                {
-                    const auto gasStart = std::chrono::steady_clock::now();
-                    #include "gasStep.H"
-                    timers.addGasBesideDem
-                    (
-                        std::chrono::duration<scalar>
-                        (
-                            std::chrono::steady_clock::now() - gasStart
-                        ).count()
-                    );
-                }
-            );
-            timers.stop(solverTimers::demBesideGas);
-
-            timers.start();
-            particles.exchangeToGas();
-            timers.stop(solverTimers::coupling);
-        }
-        else
-        {
-            // Particles: gas at the particles, DEM sub-steps, reaction on
-            // the gas; then the gas with the particles' new state
-            timers.start();
-            particles.interpolateGas(U, p_rgh);
-            timers.stop(solverTimers::coupling);
-
-            timers.start();
-            particles.advance();
-            timers.stop(solverTimers::dem);
-
-            timers.start();
-            particles.mapToGas();
-            #include "interpolateVoidage.H"
-            timers.stop(solverTimers::coupling);
-
-            timers.start();
-            #include "gasStep.H"
-            timers.stop(solverTimers::gas);
-        }
+        // Gas at the particles, DEM sub-steps, reaction and voidage for
+        // the gas, the gas's PIMPLE: in the order of the coupling schedule
+        particles.evolve
+        (
+            U, p_rgh,
+            [&]
+            {
+                #include "interpolateVoidage.H"
+            },
+            [&]
+            {
+                #include "gasStep.H"
+            },
+            timers
+        );
 
         timers.start();
         // The end time is saved whatever the write intervals: a finished

@@ -151,16 +151,7 @@ int main(int argc, char *argv[])
         Info<< nl;
     }
 
-    if
-    (
-        particles.formulation() == couplingFormulation::A
-     && max(rho) > min(rho)
-    )
-    {
-        Info<< nl << "Note: formulation A with classes of different densities:"
-            << " their shares of the bed's pressure gradient differ, which"
-            << " these balances (formulation B's) leave out" << nl;
-    }
+    particles.formulation().umfBalanceNote(Info, rho);
 
     Info<< nl << "Terminal velocity [m/s]:";
     forAll(names, k)

@@ -164,10 +164,7 @@ dem::Settings Foam::dpmCloud::demSettings() const
         }
         s.neighbourSkin = boundedEntry(dict_, "neighbourSkin", 0, dMin, true);
     }
-    if (slab_)
-    {
-        slabSettings(s);
-    }
+    particleModel_.selectEngine(s, grid_);
     return s;
 }
 
@@ -245,8 +242,8 @@ Foam::dpmCloud::dpmCloud
     g_(g),
     classNames_(dict_.subDict("classes").toc()),
     drag_(dragModel::New(dict_, gas.rho(), gas.mu())),
-    formulation_(readCouplingFormulation(dict_)),
-    schedule_(readCouplingSchedule(dict_)),
+    formulation_(couplingFormulation::New(dict_)),
+    schedule_(couplingSchedule::New(dict_)),
     couplingThreads_(1),
     exchangeReady_(false),
     frozen_(dict_.lookupOrDefault<bool>("frozen", false)),
@@ -263,8 +260,8 @@ Foam::dpmCloud::dpmCloud
     ),
     writeInterval_(positiveEntry(dict_, "writeInterval", 0.01)),
     voidageMin_(boundedEntryOrDefault(dict_, "voidageMin", 0.1, 0, 1, true)),
-    voidageModel_(voidageModel::New(dict_, grid_, voidageMin_)),
-    slab_(voidageModel_->particleDimension() == 3),
+    particleModel_(dict_, grid_, voidageMin_),
+    slab_(particleModel_.slab()),
     voidage_
     (
         fieldIO("voidage", mesh, mode == startMode::run),
@@ -303,10 +300,10 @@ Foam::dpmCloud::dpmCloud
     ),
     dtStep_(mesh.time().deltaTValue())
 {
-    Info<< "Coupling: " << formulationDescription(formulation_).c_str()
-        << nl << "Coupling: " << scheduleDescription(schedule_).c_str()
-        << nl << "Coupling: " << voidageModel_->description().c_str()
-        << endl;
+    Info<< "Coupling: " << formulation_->description().c_str()
+        << nl << "Coupling: " << schedule_->description().c_str()
+        << nl << "Coupling: "
+        << particleModel_.voidage().description().c_str() << endl;
 
     if (classNames_.size() < 1)
     {
@@ -322,7 +319,7 @@ Foam::dpmCloud::dpmCloud
     const dem::Settings settings = demSettings();
     // The voidage model's own check first (slab3D: the spheres fit in the
     // slab), in its words rather than the DEM's
-    voidageModel_->checkDiameters(dict_, diametersOf(settings));
+    particleModel_.voidage().checkDiameters(dict_, diametersOf(settings));
     checkDemStep(settings);
     guarded
     (
@@ -333,14 +330,15 @@ Foam::dpmCloud::dpmCloud
         << dem::streamingLoopsInUse().c_str()
         << " (environment variable DEM_SIMD = baseline or avx2 chooses;"
         << " the same bits)" << endl;
-    couplingThreads_ =
-        settings.nThreads
-      + (schedule_ == couplingSchedule::concurrent ? 1 : 0);
+    couplingThreads_ = settings.nThreads + schedule_->gasThreads();
     drag_->setThreads(couplingThreads_);
     checkSettings(gas, mode);
 
     subSteps();         // the DEM step must divide the CFD step
-    warnThinSlab();
+    formulation_->checkBedDepth
+    (
+        dict_, grid_, classDiameters(), slab_, voidageMin_
+    );
     if (mode == startMode::run)
     {
         faultInjection::install(mesh);      // before a bed is packed and saved

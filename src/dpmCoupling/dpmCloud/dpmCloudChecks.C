@@ -91,7 +91,7 @@ void Foam::dpmCloud::checkSettings
     caseChecks::threadCount
     (
         dict_, "constant/particleProperties", dem_->settings().nThreads,
-        schedule_ == couplingSchedule::concurrent
+        schedule_->gasThreads() > 0
     );
 
     if (mode != startMode::run) return;

@@ -95,10 +95,10 @@ void Foam::dpmCloud::interpolateGas
     {
         Kd[i] = K_[i];
     }
-    if (formulation_ == couplingFormulation::A)
-    {
-        addPressureGradientForce(p_rgh);
-    }
+    formulation_->addPressureForce
+    (
+        *dem_, K_, grid_, p_rgh, particleFraction_, voidageMin_, nThreads
+    );
     gasVelocitySeen_ = Uc;
 }
 
@@ -132,19 +132,28 @@ void Foam::dpmCloud::advanceParticles()
 }
 
 
-Foam::vector Foam::dpmCloud::fluidForce(const label i) const
+void Foam::dpmCloud::exchangedForces(vectorField& F) const
 {
-    return
-        frozen_
-      ? frozenForce_[i]
-      : vector(dem_->meanFluidForceX()[i], dem_->meanFluidForceY()[i], 0);
+    formulation_->exchangedForces(*dem_, K_, frozen_, frozenForce_, F);
 }
 
 
-void Foam::dpmCloud::mapToGas()
+Foam::tmp<Foam::volScalarField> Foam::dpmCloud::gasFraction() const
 {
-    exchangeToGas();
-    updateVoidage();
+    return couplingFormulation::gasFraction(particleFraction_, voidageMin_);
+}
+
+
+void Foam::dpmCloud::evolve
+(
+    const volVectorField& U,
+    const volScalarField& p_rgh,
+    const std::function<void()>& gasVoidage,
+    const std::function<void()>& gasStep,
+    solverTimers& timers
+)
+{
+    schedule_->step(*this, U, p_rgh, gasVoidage, gasStep, timers);
 }
 
 
@@ -158,19 +167,14 @@ void Foam::dpmCloud::exchangeToGas()
     vectorField& Fp = Fp_.primitiveFieldRef();
     Kc = 0;
     Fp = Zero;
-    // B, moving particles: the DEM's mean force as it is, read here rather
-    // than through a call per particle
-    const bool meanForce =
-        formulation_ == couplingFormulation::B && !frozen_;
-    const double* FX = dem_->meanFluidForceX();
-    const double* FY = dem_->meanFluidForceY();
-    const labelList& counts = voidageModel_->counts();
-    const labelList& cells = voidageModel_->cells();
-    const scalarList& fractions = voidageModel_->fractions();
+    vectorField exchanged;
+    exchangedForces(exchanged);
+    const labelList& counts = particleModel_.voidage().counts();
+    const labelList& cells = particleModel_.voidage().cells();
+    const scalarList& fractions = particleModel_.voidage().fractions();
     for (label i = 0; i < n; ++i)
     {
-        const vector F =
-            meanForce ? vector(FX[i], FY[i], 0) : exchangedForce(i);
+        const vector& F = exchanged[i];
         for (label k = 4*i; k < 4*i + counts[i]; ++k)
         {
             const label c = cells[k];
@@ -193,7 +197,7 @@ void Foam::dpmCloud::exchangeToGas()
 
 void Foam::dpmCloud::updateOverlaps()
 {
-    voidageModel_->updateOverlaps
+    particleModel_.voidage().updateOverlaps
     (
         size(), dem_->x(), dem_->y(), dem_->diameter(),
         couplingThreads_
@@ -204,7 +208,7 @@ void Foam::dpmCloud::updateOverlaps()
 void Foam::dpmCloud::updateVoidage()
 {
     updateOverlaps();
-    voidageModel_->updateFields
+    particleModel_.voidage().updateFields
     (
         size(), dem_->diameter(),
         voidage_.primitiveFieldRef(), particleFraction_.primitiveFieldRef()

@@ -36,9 +36,9 @@ void Foam::dpmCloud::updateMixture()
     fractionByDiameter_ = 0;
 
     // The same shares as particleFraction_ in updateVoidage
-    const labelList& counts = voidageModel_->counts();
-    const labelList& cells = voidageModel_->cells();
-    const scalarList& fractions = voidageModel_->fractions();
+    const labelList& counts = particleModel_.voidage().counts();
+    const labelList& cells = particleModel_.voidage().cells();
+    const scalarList& fractions = particleModel_.voidage().fractions();
     for (label i = 0; i < n; ++i)
     {
         solidsMixture::addParticle

@@ -73,15 +73,17 @@ void Foam::dpmCloud::writeStartParticles(const volVectorField& U)
 void Foam::dpmCloud::reportBalance(Ostream& os) const
 {
     vector particleForce = Zero;
-    for (label i = 0; i < size(); ++i)
+    if (K_.size() == size())
     {
-        if (K_.size() == size()) particleForce += exchangedForce(i);
+        vectorField F;
+        exchangedForces(F);
+        for (const vector& Fi : F) particleForce += Fi;
     }
     const vector gasForce = gSum(Fp_.primitiveField())*grid_.cellVolume();
 
     os  << "Exchange: force on particles " << particleForce
         << " N, reaction mapped to the gas " << gasForce << " N" << nl;
-    voidageModel_->reportBalance
+    particleModel_.voidage().reportBalance
     (
         os, size(), dem_->diameter(), particleFraction_.primitiveField()
     );

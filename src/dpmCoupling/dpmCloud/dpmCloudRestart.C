@@ -49,14 +49,8 @@ std::string Foam::dpmCloud::runRecord() const
 {
     return
         "dragModel " + drag_->type() + "\n"
-        "formulation "
-      + std::string(formulation_ == couplingFormulation::A ? "A" : "B") + "\n"
-        "couplingSchedule "
-      + std::string
-        (
-            schedule_ == couplingSchedule::concurrent
-          ? "concurrent" : "sequential"
-        ) + "\n";
+        "formulation " + formulation_->type() + "\n"
+        "couplingSchedule " + schedule_->type() + "\n";
 }
 
 

@@ -22,13 +22,6 @@ License
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::dpmCloud::slabSettings(dem::Settings& s) const
-{
-    s.dimension = 3;
-    s.slabDepth = grid_.depth();
-}
-
-
 void Foam::dpmCloud::slabGasInputs(scalarField& slip)
 {
     const label n = size();

@@ -12,36 +12,22 @@ License
 #include "couplingSchedule.H"
 #include "choiceEntry.H"
 
-// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
-Foam::couplingSchedule Foam::readCouplingSchedule(const dictionary& dict)
+Foam::autoPtr<Foam::couplingSchedule> Foam::couplingSchedule::New
+(
+    const dictionary& dict
+)
 {
     const word choice = choiceEntry
     (
-        dict, "couplingSchedule", {"sequential", "concurrent"}, "sequential",
+        dict, "couplingSchedule", dictionaryConstructorTablePtr_->sortedToc(),
+        "sequential",
         "sequential (the gas after the particles, default) or concurrent (the"
         " gas beside the particles on a thread of its own, one CFD step"
         " behind them)"
     );
-    return
-        choice == "concurrent"
-      ? couplingSchedule::concurrent
-      : couplingSchedule::sequential;
-}
-
-
-Foam::string Foam::scheduleDescription(const couplingSchedule s)
-{
-    if (s == couplingSchedule::concurrent)
-    {
-        return
-            "schedule concurrent: the gas advances beside the particles, on"
-            " a thread of its own, with their voidage and reaction of the"
-            " step before (docs/model.md)";
-    }
-    return
-        "schedule sequential: the particles advance, then the gas with"
-        " their new voidage and reaction";
+    return (*dictionaryConstructorTablePtr_)[choice]();
 }
 
 

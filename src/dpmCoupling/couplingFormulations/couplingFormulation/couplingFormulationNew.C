@@ -12,36 +12,20 @@ License
 #include "couplingFormulation.H"
 #include "choiceEntry.H"
 
-// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
-Foam::couplingFormulation Foam::readCouplingFormulation
+Foam::autoPtr<Foam::couplingFormulation> Foam::couplingFormulation::New
 (
     const dictionary& dict
 )
 {
     const word choice = choiceEntry
     (
-        dict, "formulation", {"A", "B"}, "B",
+        dict, "formulation", dictionaryConstructorTablePtr_->sortedToc(), "B",
         "B (the gas sees the whole pressure gradient, the paper's, default)"
         " or A (particles also feel -V_p grad p, the gas eps grad p)"
     );
-    return choice == "A" ? couplingFormulation::A : couplingFormulation::B;
-}
-
-
-Foam::string Foam::formulationDescription(const couplingFormulation f)
-{
-    if (f == couplingFormulation::A)
-    {
-        return
-            "formulation A (Zhou et al. 2010 set I): particles feel the"
-            " drag eps_g K_B (u - v) and the pressure-gradient force"
-            " -V_p grad p; the gas carries eps_g grad p and the drag only";
-    }
-    return
-        "formulation B (the paper's, Zhou et al. 2010 set II): the gas"
-        " sees the whole pressure gradient; particles feel the drag"
-        " K_B (u - v) and the buoyancy -rho_g V_p g";
+    return (*dictionaryConstructorTablePtr_)[choice]();
 }
 
 

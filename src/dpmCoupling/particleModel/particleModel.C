@@ -1,0 +1,67 @@
+/*---------------------------------------------------------------------------*\
+    dpmFoam2D: soft-sphere CFD-DEM for gas-solid fluidized beds
+-------------------------------------------------------------------------------
+    SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+    SPDX-License-Identifier: GPL-3.0-or-later
+License
+    This file is part of dpmFoam2D, free software under the GNU General
+    Public License, version 3 or (at your option) any later version;
+    see the file LICENSE.
+\*---------------------------------------------------------------------------*/
+
+#include "particleModel.H"
+#include "discs2D.H"
+#include "slab3D.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::particleModel::engine Foam::particleModel::engineOf
+(
+    const voidageModel& model
+)
+{
+    if (isA<voidageModels::slab3D>(model))
+    {
+        return engine::slabSpheres;
+    }
+    if (!isA<voidageModels::discs2D>(model))
+    {
+        FatalErrorInFunction
+            << "The voidage model " << model.type() << " names no DEM engine"
+            << " (particleModel::engineOf)" << abort(FatalError);
+    }
+    return engine::discs2D;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::particleModel::particleModel
+(
+    const dictionary& dict,
+    const cartesianGrid2D& grid,
+    const scalar voidageMin
+)
+:
+    voidage_(voidageModel::New(dict, grid, voidageMin)),
+    engine_(engineOf(*voidage_))
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::particleModel::selectEngine
+(
+    dem::Settings& s,
+    const cartesianGrid2D& grid
+) const
+{
+    if (slab())
+    {
+        s.dimension = 3;
+        s.slabDepth = grid.depth();
+    }
+}
+
+
+// ************************************************************************* //
