@@ -61,8 +61,8 @@ struct HertzImpact {
     {
         return std::pow(15.0 * mEff * v * v / (16.0 * eStar * std::sqrt(rEff)), 0.4);
     }
-    // 2 int_0^1 dx/sqrt(1 - x^5/2) = 2.94320 (Johnson 1985, eq. 11.24's integral)
-    double contactTime(double v) const { return 2.94320 * peakOverlap(v) / v; }
+    // 2 int_0^1 dx/sqrt(1 - x^5/2) = 2.9432752 (Johnson 1985, eq. 11.24's integral, by quadrature)
+    double contactTime(double v) const { return 2.9432752 * peakOverlap(v) / v; }
 };
 
 /// Two small spheres (wall = false) or a small sphere on the floor (wall = true).
