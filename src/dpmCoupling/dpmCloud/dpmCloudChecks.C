@@ -36,6 +36,7 @@ void Foam::dpmCloud::checkEntries() const
     (
         dict_, particlePropertiesEntries::top(), where, alsoAllowed,
         "and <dragModel>Coeffs, the entries of #included settings files"
+        " and of constant/caseSettings"
     );
 
     for (const entry& e : dict_.subDict("classes"))
