@@ -131,9 +131,34 @@ void Foam::dpmCloud::checkDemStep(const dem::Settings& settings) const
     {
         return;
     }
+    const bool hertz =
+        settings.contact.law == dem::ContactLawType::hertzMindlin;
+    const auto elastic = [](scalar E, scalar nu)
+    {
+        return E > 0 && nu > -1 && nu <= 0.5;
+    };
+    if
+    (
+        hertz
+     && (
+            !elastic
+            (
+                settings.contact.wallYoungsModulus,
+                settings.contact.wallPoissonRatio
+            )
+         || !(settings.contact.impactSpeed > 0)
+        )
+    )
+    {
+        return;
+    }
     for (const auto& c : settings.classes)
     {
-        if (!(c.diameter > 0) || !(c.density > 0))
+        if
+        (
+            !(c.diameter > 0) || !(c.density > 0)
+         || (hertz && !elastic(c.youngsModulus, c.poissonRatio))
+        )
         {
             return;
         }
