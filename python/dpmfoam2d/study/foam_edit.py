@@ -3,12 +3,16 @@
 """The dictionary edits of dpmStudy (its settings, a variant's edits), made
 with OpenFOAM's foamDictionary.
 
-foamDictionary writes an edited file as it read it: with its #include
-expanded, so the entries of a settings file it includes (a template's
-constant/caseSettings: wSmall, pressure ...) would land in the solver's
-dictionary, which knows no such entries. After each edit those entries are
-removed again: their values are already expanded where the dictionary used
-them ($wSmall, #eval), and the dictionary keeps only its own entries.
+An edit leaves a dictionary's directives and variables as they are
+(foamDictionary -disableFunctionEntries): a template's
+#include "<constant>/caseSettings" stays an include and $endTime a variable,
+so a later change of the settings still reaches every file that uses them.
+foamDictionary cannot read an #eval's expression unexpanded: a dictionary
+with #eval is edited expanded (its values as they are at that moment) and the
+entries of the files it includes (a template's caseSettings: wSmall,
+pressure ...) are removed again afterwards, so that it keeps only its own
+entries. A lookup (foam_has, foam_get) sees the dictionary as the solver
+does, with its includes expanded.
 """
 
 import os
@@ -18,10 +22,16 @@ import subprocess
 _COMMENTS = re.compile(r"//[^\n]*|/\*.*?\*/", re.S)
 _TOKENS = re.compile(r'"(?:[^"\\]|\\.)*"|[{}();]|[^\s{}();"]+')
 _INCLUDE = re.compile(r'#(?:include|includeIfPresent|sinclude)\s+"([^"]+)"')
+_EXPRESSION = re.compile(r"#(?:eval|calc|codeStream)\b")
 
 
-def _foam_dictionary(*args, **kwargs):
-    return subprocess.run(["foamDictionary"] + list(args), **kwargs)
+def _foam_dictionary(dict_file, *args, **kwargs):
+    """foamDictionary <args> dict_file, in the case the file belongs to (an
+    #include "<constant>/..." resolves against that case, whatever the
+    working directory)."""
+    case = os.path.dirname(os.path.dirname(os.path.abspath(dict_file)))
+    return subprocess.run(["foamDictionary", "-case", case] + list(args) + [dict_file],
+                          **kwargs)
 
 
 def own_entries(text):
@@ -64,39 +74,54 @@ def included_entries(dict_file, text):
         path = name if os.path.isabs(name) else os.path.join(here, name)
         if not os.path.isfile(path):
             continue
-        r = _foam_dictionary("-keywords", path, stdout=subprocess.PIPE,
+        r = _foam_dictionary(path, "-keywords", stdout=subprocess.PIPE,
                              stderr=subprocess.DEVNULL, universal_newlines=True)
         keys.update(k for k in r.stdout.split() if k != "FoamFile")
     return keys
 
 
 def _edit(dict_file, entry, args):
-    """foamDictionary -entry entry <args> dict_file, keeping out of the file
-    the entries of the files it includes."""
     with open(dict_file) as f:
         text = f.read()
-    foreign = included_entries(dict_file, text) - set(own_entries(text)) \
-        - {entry.split("/")[0]} if "#" in text else set()
-    _foam_dictionary("-entry", entry, *args, dict_file, check=True,
-                     stdout=subprocess.DEVNULL)
+    if _EXPRESSION.search(_COMMENTS.sub(" ", text)):
+        _edit_expanded(dict_file, entry, args, text)
+    else:
+        _run_edit(dict_file, entry, ["-disableFunctionEntries"], args)
+
+
+def _edit_expanded(dict_file, entry, args, text):
+    foreign = included_entries(dict_file, text) - set(own_entries(text)) - {entry.split("/")[0]}
+    _run_edit(dict_file, entry, [], args)
     for key in sorted(foreign):
-        _foam_dictionary("-entry", key, "-remove", dict_file, check=True,
-                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        _run_edit(dict_file, key, [], ["-remove"])
+
+
+def _run_edit(dict_file, entry, options, args):
+    # stderr kept for a failure: foamDictionary's own message names the problem
+    r = _foam_dictionary(dict_file, *options, "-entry", entry, *args,
+                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                         universal_newlines=True)
+    if r.returncode != 0:
+        raise RuntimeError("foamDictionary -entry %s %s %s failed:\n%s"
+                           % (entry, " ".join(args), dict_file, r.stderr))
 
 
 def foam_set(dict_file, entry, value):
     _edit(dict_file, entry, ["-set", str(value)])
 
 
+def foam_has(dict_file, entry):
+    return _foam_dictionary(dict_file, "-entry", entry, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL).returncode == 0
+
+
 def foam_remove(dict_file, entry):
     """Remove entry if the dictionary has it."""
-    r = _foam_dictionary("-entry", entry, dict_file, stdout=subprocess.DEVNULL,
-                         stderr=subprocess.DEVNULL)
-    if r.returncode == 0:
+    if foam_has(dict_file, entry):
         _edit(dict_file, entry, ["-remove"])
 
 
 def foam_get(dict_file, entry):
-    r = _foam_dictionary("-entry", entry, "-value", dict_file, check=True,
+    r = _foam_dictionary(dict_file, "-entry", entry, "-value", check=True,
                          stdout=subprocess.PIPE, universal_newlines=True)
     return r.stdout.strip()
