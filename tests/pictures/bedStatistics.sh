@@ -10,10 +10,14 @@
 # set here: small ones alternately 0.3 m/s and 0.004 m/s, large ones 0.1
 # m/s, so speedRmsSmall = sqrt((0.3^2 + 0.004^2)/2), stillSmall = 0.5
 # (threshold 0.01 m/s), speedRmsLarge = 0.1, stillLarge = 0. Tolerance 1e-6
-# relative (velocities are stored in float32). Bad options and a missing
+# relative (velocities are stored in float32). Then on the files the solver
+# wrote (the test column, 0.02 s): each class's rms speed (in the plane), still fraction
+# and mean voidage at its particles as computed here from the solver's HDF5
+# datasets (read with h5py), to 1e-6 relative. Bad options and a missing
 # case give errors naming them.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/pictures/pictureFunctions"
+. "$testsDir/solver/testFunctions"
 
 makeParticleCase "$workDir/bed" 1.5 1.6
 /usr/bin/python3 - "$workDir/bed" <<'PY' || fail "setting particle velocities"
@@ -62,6 +66,35 @@ close(par["speedRmsLarge"], 0.1)
 assert np.all(par["stillLarge"] == 0.0), par["stillLarge"]
 assert np.all(np.isnan(par["voidageSmall"])), "no voidage in the files: nan expected"
 PY
+# The solver's own files
+makeCase "$workDir/column"
+(cd "$workDir/column" && runSolver) || fail "the test column"
+dpmBedStatistics "$workDir/column" -every 0.01 >log.column 2>&1 \
+    || { cat log.column; fail "dpmBedStatistics on the solver's files"; }
+/usr/bin/python3 - "$workDir/column" <<'PY' || fail "bed statistics of the solver's files"
+import glob, os, sys
+import h5py, numpy as np
+from dpmfoam2d import tables
+case = sys.argv[1]
+par = tables.read_postprocessing(case, "bedStatistics", "particles.dat")
+files = sorted(glob.glob(os.path.join(case, "particles", "*.h5")),
+               key=lambda f: float(os.path.basename(f)[:-3]))
+assert len(par["Time"]) == len(files), (par["Time"], files)
+for k, path in enumerate(files):
+    with h5py.File(path, "r") as f:
+        cls = f["class"][()].reshape(-1)
+        speed = np.linalg.norm(f["velocity"][()][:, :2].astype(float), axis=1)  # in the plane
+        eps = f["voidage"][()].astype(float).reshape(-1)
+    for c, name in ((0, "Small"), (1, "Large")):
+        want = {"speedRms": np.sqrt(np.mean(speed[cls == c] ** 2)),
+                "still": np.mean(speed[cls == c] < 0.01),
+                "voidage": np.mean(eps[cls == c])}
+        for q, w in want.items():
+            got = par[q + name][k]
+            print("%s: %s%s %.6g (from the file %.6g)" % (os.path.basename(path), q, name, got, w))
+            assert abs(got - w) <= 1e-6 * max(abs(w), 1e-12), (q + name, got, w)
+PY
+
 # Bad input
 dpmBedStatistics "$workDir/bed" -bubbleVoidage 1.2 >log.bad 2>&1 && fail "-bubbleVoidage 1.2 accepted"
 grep -q "bubbleVoidage 1.2 is outside (0, 1)" log.bad || { cat log.bad; fail "bubbleVoidage message"; }

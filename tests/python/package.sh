@@ -8,7 +8,8 @@
 #     with its type and components, those always written are there, and
 #     read_particles returns all of them (voidage and gasVelocity in every
 #     file, the start's included; spin in the slab mode only);
-#   - every attribute of the solver's particles.xdmf is one of FIELDS;
+#   - particles.xdmf lists, for each time, every dataset of that time's
+#     file as an attribute (position as the geometry), each one of FIELDS;
 #   - the counts per class are the case's (600 and 130), and the voidage
 #     the particles saw lies in (0, 1];
 #   - lacey() and segregation() give the function object's rows, one per
@@ -69,6 +70,15 @@ index = ET.parse("particles/particles.xdmf")
 names = {a.get("Name") for a in index.iter("Attribute")}
 assert names and names <= set(dpm.FIELDS), "particles.xdmf attributes %s not in FIELDS" % (
     names - set(dpm.FIELDS))
+grids = [g for g in index.iter("Grid") if g.get("GridType") == "Uniform"]
+assert len(grids) == len(times), "particles.xdmf lists %d times, the case has %d" % (
+    len(grids), len(times))
+for grid, (t, path) in zip(grids, times):
+    with h5py.File(path, "r") as f:
+        written = set(f)
+    listed = {a.get("Name") for a in grid.iter("Attribute")} | {"position"}
+    assert listed == written, "particles.xdmf at %s lists %s, its file has %s" % (
+        grid.find("Time").get("Value"), sorted(listed), sorted(written))
 print("%d particle files: datasets %s; particles.xdmf attributes %s"
       % (len(times), " ".join(sorted(written)), " ".join(sorted(names))))
 

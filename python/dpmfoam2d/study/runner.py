@@ -11,7 +11,7 @@ import sys
 
 from .. import BIN_DIR
 from . import definition as study_definition
-from . import jobs as study_jobs, results as study_results, slurm as study_slurm
+from . import cases as study_cases, jobs as study_jobs, slurm as study_slurm
 from .foam_edit import foam_remove, foam_set
 from .jobs import Job, latest_complete_time, lock_holder, running_in, take_lock
 from .variants import Variant
@@ -134,7 +134,7 @@ class Study:
                                                 self.variant.name if self.variant else None))
 
     def end_time(self, case):
-        return float(study_results.flat_dictionary(
+        return float(study_cases.flat_dictionary(
             os.path.join(case, "constant", "caseSettings"))["endTime"])
 
     def finished(self, case):

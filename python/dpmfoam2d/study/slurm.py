@@ -197,12 +197,12 @@ def hours(seconds):
 
 def status(study, running_in, latest_complete_time):
     """One line per bed and case: state, job, simulated time."""
-    from . import results as study_results
+    from . import cases as study_cases
     states = queue_states()
     beds_dir = os.path.join(study.dir, "beds")
     dirs = [("beds/" + b, os.path.join(beds_dir, b), "bed")
             for b in sorted(os.listdir(beds_dir))] if os.path.isdir(beds_dir) else []
-    dirs += [(c["case"], c["dir"], "case") for c in study_results.find_cases(study.dir)]
+    dirs += [(c["case"], c["dir"], "case") for c in study_cases.find_cases(study.dir)]
     if not dirs:
         say("dpmStudy: no beds or cases in %s" % study.dir)
         return

@@ -118,7 +118,8 @@ Foam::particleWriter::particleWriter
 )
 :
     dir_(caseDir/"particles"),
-    depth_(depth)
+    depth_(depth),
+    gasFields_(false)
 {
     mkDir(dir_);
 
@@ -216,7 +217,8 @@ void Foam::particleWriter::write
     ok = ok && writeDataset(h5, "diameter", H5T_NATIVE_FLOAT, diameter, n, 1);
     ok = ok && writeDataset(h5, "class", H5T_NATIVE_SCHAR, classIndex, n, 1);
     ok = ok && writeDataset(h5, "id", H5T_NATIVE_INT, id, n, 1);
-    if (ok && voidage.size() == label(n) && gasVelocity.size() == label(n))
+    gasFields_ = voidage.size() == label(n) && gasVelocity.size() == label(n);
+    if (ok && gasFields_)
     {
         std::vector<float> eps(n), u(3*n);
         for (hsize_t i = 0; i < n; ++i)
@@ -317,6 +319,11 @@ void Foam::particleWriter::writeIndex(const dem::Simulation& particles) const
             attribute(h5, "diameter", "Node", "Scalar", "Float", 4, 1);
             attribute(h5, "class", "Node", "Scalar", "Char", 1, 1);
             attribute(h5, "id", "Node", "Scalar", "Int", 4, 1);
+            if (gasFields_)
+            {
+                attribute(h5, "voidage", "Node", "Scalar", "Float", 4, 1);
+                attribute(h5, "gasVelocity", "Node", "Vector", "Float", 4, 3);
+            }
             os  << "  </Grid>\n";
         }
         os  << "</Grid>\n</Domain>\n</Xdmf>\n";
