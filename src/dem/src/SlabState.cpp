@@ -244,12 +244,17 @@ void SlabSystem::load(const std::string& path)
     array(key);
     const std::vector<double> here = slabKey(settings_);
     if (key != here) {
-        std::string what = "written with other settings";
+        // The key as the disc engine's with the depth in the skin's place, which the
+        // comparison leaves out: named on its own
+        std::vector<Difference> differ = compareSettingsKeys(key, here, settings_);
         if (key.size() == here.size() && key.back() != here.back()) {
-            what += " (slabDepth = " + formatValue(key.back()) + " m in the file, "
-                    + formatValue(here.back()) + " m here)";
+            const auto [inFile, asked] = textsApart(key.back(), here.back());
+            differ.push_back({"slabDepth", inFile + " m", asked + " m"});
         }
-        fail(what);
+        if (!differ.empty()) {
+            throw Error("slab state file '" + path + "' was written with other settings: "
+                        + describe(differ));
+        }
     }
     SlabSystem t(settings_);
     std::uint8_t hasRecipe = 0;

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -350,4 +351,29 @@ TEST(BedRecord, SettlingReportsItsProgressWithoutChangingTheBed)
     shorter.settle(0.003, 0.0);
     EXPECT_EQ(energies[3], shorter.kineticEnergy() / static_cast<double>(shorter.size()));
     EXPECT_GT(energies[3], 0.0);
+}
+
+// A mesh of other cell counts gives the same box to a last digit (blockMesh sums its cells:
+// 0.15000000000000002 against 0.15): the bed loads; a box 1e-9 apart is another bed.
+TEST(BedRecord, BoxApartByRoundOffLoadsTheBed)
+{
+    const std::string path = tempPath("bedRoundOff.state");
+    saveBed(path);
+    Settings nearly = settings();
+    nearly.box.xMax = std::nextafter(box.xMax, 1.0);
+    nearly.box.yMax = std::nextafter(nearly.box.yMax, 0.0);
+    BedRecipe r = recipe();
+    r.region.xMax = nearly.box.xMax;
+    Simulation used(nearly);
+    EXPECT_TRUE(used.loadBed(path, r));
+    EXPECT_EQ(used.size(), 160u);
+
+    Settings other = settings();
+    other.box.xMax = box.xMax * (1 + 1e-9);
+    BedRecipe wider = recipe();
+    wider.region.xMax = other.box.xMax;
+    Simulation refused(other);
+    const std::string what = errorOf([&] { refused.loadBed(path, wider); });
+    EXPECT_NE(what.find("box xMax"), std::string::npos) << what;
+    std::remove(path.c_str());
 }
