@@ -94,6 +94,7 @@ int main(int argc, char *argv[])
     (
         "particles", mesh, gas, g.value(), dpmCloud::startMode::pack
     );
+    const fluidizationVelocities& fluid = particles.fluidization();
     const scalar gMag = mag(g.value());
     const wordList& names = particles.classNames();
     const std::vector<int> n(particles.classCounts());
@@ -138,15 +139,15 @@ int main(int argc, char *argv[])
 
     for (const scalar eps : voidages)
     {
-        const scalar Umf = particles.mixtureUmf(eps, gMag);
+        const scalar Umf = fluid.mixtureUmf(eps, gMag);
         Info<< eps << "  " << Umf << "  " << U0/Umf;
         forAll(names, k)
         {
-            Info<< "  " << particles.carryingVelocity(k, eps, gMag);
+            Info<< "  " << fluid.carryingVelocity(k, eps, gMag);
         }
         forAll(names, k)
         {
-            Info<< "  " << particles.carryingVelocity(k, eps, gMag, true);
+            Info<< "  " << fluid.carryingVelocity(k, eps, gMag, true);
         }
         Info<< nl;
     }
@@ -156,7 +157,7 @@ int main(int argc, char *argv[])
     Info<< nl << "Terminal velocity [m/s]:";
     forAll(names, k)
     {
-        Info<< ' ' << names[k] << ' ' << particles.terminalVelocity(k, gMag);
+        Info<< ' ' << names[k] << ' ' << fluid.terminalVelocity(k, gMag);
     }
     Info<< nl << nl << "End\n" << endl;
 

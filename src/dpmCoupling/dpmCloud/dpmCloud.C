@@ -13,12 +13,11 @@ License
 #include "gasProperties.H"
 #include "positiveEntry.H"
 #include "caseChecks.H"
-#include "emptyFvPatch.H"
-#include "fixedValueFvPatchFields.H"
-#include "zeroGradientFvPatchFields.H"
-#include "mathematicalConstants.H"
+#include "particleChecks.H"
 #include "faultInjection.H"
 
+#include <exception>
+#include <omp.h>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -28,178 +27,103 @@ namespace Foam
 }
 
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-using namespace Foam;
-
-//- Patch types of the voidage: the distributor sees particle-free gas
-//  (voidage 1, so the face flux there is exactly U0), others zero gradient
-wordList voidagePatchTypes(const fvMesh& mesh, const word& inletPatch)
-{
-    wordList types(mesh.boundary().size(), zeroGradientFvPatchScalarField::typeName);
-    forAll(mesh.boundary(), patchi)
-    {
-        const fvPatch& patch = mesh.boundary()[patchi];
-        if (isA<emptyFvPatch>(patch))
-        {
-            types[patchi] = emptyFvPatch::typeName;
-        }
-        else if (patch.name() == inletPatch)
-        {
-            types[patchi] = fixedValueFvPatchScalarField::typeName;
-        }
-    }
-    return types;
-}
-
-IOobject fieldIO(const word& name, const fvMesh& mesh, const bool write)
-{
-    return IOobject
-    (
-        name,
-        mesh.time().timeName(),
-        mesh,
-        IOobject::NO_READ,
-        write ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
-    );
-}
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::fileName Foam::dpmCloud::stateFile(const word& timeName) const
+void Foam::dpmCloud::checkSettings
+(
+    const gasProperties& gas,
+    const startMode mode
+) const
 {
-    return mesh_.time().path()/timeName/"uniform"/"dem.state";
+    const particleChecks checks(dict_, classNames_);
+    checks.gasDensity(gas, engine_.classDensities());
+
+    if (mode == startMode::postProcess) return;
+
+    caseChecks::threadCount
+    (
+        dict_, "constant/particleProperties", engine_.dem().settings().nThreads,
+        schedule_->gasThreads() > 0
+    );
+
+    if (mode != startMode::run) return;
+
+    checks.writeInterval(writeInterval_, mesh_.time().deltaTValue());
 }
 
 
-dem::Settings Foam::dpmCloud::demSettings() const
+void Foam::dpmCloud::initialise(const startMode mode)
 {
-    dem::Settings s;
-
-    const dictionary& classes = dict_.subDict("classes");
-    for (const word& name : classNames_)
+    if (mode == startMode::pack)
     {
-        const dictionary& c = classes.subDict(name);
-        s.classes.push_back
-        (
-            dem::ParticleClass
-            {
-                name, c.get<scalar>("diameter"), c.get<scalar>("density"),
-                c.lookupOrDefault<scalar>("youngsModulus", 0),
-                c.lookupOrDefault<scalar>("poissonRatio", 0)
-            }
-        );
-        if (s.classes.back().diameter > min(grid_.dx(), grid_.dy()))
+        return;     // dpmPackBed calls packBed
+    }
+
+    const fileName restart =
+        engine_.stateFile(mesh_.time(), mesh_.time().timeName());
+    if (isFile(restart))
+    {
+        engine_.loadRestart(restart, slab_);
+        if (mode == startMode::run && mesh_.time().value() > 0)
         {
-            FatalIOErrorInFunction(c)
-                << "Entry 'diameter' = " << s.classes.back().diameter
-                << " of class " << name << " in " << dict_.name()
-                << " is larger than the gas cell (" << grid_.dx() << " x "
-                << grid_.dy() << " m); allowed range (0, "
-                << min(grid_.dx(), grid_.dy()) << "]" << exit(FatalIOError);
+            // time 0's bed has seen no gas
+            engine_.checkRestartModels(restart);
         }
-    }
-
-    const dictionary& contact = dict_.subOrEmptyDict("contact");
-    dem::ContactSettings& cs = s.contact;
-    const word law =
-        contact.lookupOrDefault<word>("contactLaw", dem::contactLawName(cs.law));
-    try
-    {
-        cs.law = dem::contactLawFromName(law);
-    }
-    catch (const dem::Error&)
-    {
-        FatalIOErrorInFunction(contact)
-            << "Entry 'contactLaw' = " << law << " in " << contact.name()
-            << " is not allowed; allowed: linear (the paper's, default) or"
-            << " HertzMindlin (docs/model.md, \"The Hertz-Mindlin law\")"
-            << exit(FatalIOError);
-    }
-    cs.wallYoungsModulus =
-        contact.lookupOrDefault<scalar>("wallYoungsModulus", cs.wallYoungsModulus);
-    cs.wallPoissonRatio =
-        contact.lookupOrDefault<scalar>("wallPoissonRatio", cs.wallPoissonRatio);
-    cs.impactSpeed = contact.lookupOrDefault<scalar>("impactSpeed", cs.impactSpeed);
-    cs.kn = contact.lookupOrDefault<scalar>("kn", cs.kn);
-    cs.kt = contact.lookupOrDefault<scalar>("kt", cs.kt);
-    cs.restitution = contact.lookupOrDefault<scalar>("restitution", cs.restitution);
-    cs.restitutionWall =
-        contact.lookupOrDefault<scalar>("restitutionWall", cs.restitutionWall);
-    cs.frictionParticle =
-        contact.lookupOrDefault<scalar>("frictionParticle", cs.frictionParticle);
-    cs.frictionWall = contact.lookupOrDefault<scalar>("frictionWall", cs.frictionWall);
-    cs.tangentialDampingRatio =
-        contact.lookupOrDefault<scalar>
-        (
-            "tangentialDampingRatio", cs.tangentialDampingRatio
-        );
-    cs.rollingFriction =
-        contact.lookupOrDefault<scalar>("rollingFriction", cs.rollingFriction);
-    cs.rollingFrictionWall =
-        contact.lookupOrDefault<scalar>("rollingFrictionWall", cs.rollingFrictionWall);
-
-    s.box = dem::Box{grid_.xMin(), grid_.xMax(), grid_.yMin(), grid_.yMax()};
-    s.gravity[0] = g_.x();
-    s.gravity[1] = g_.y();
-    s.dt = dict_.get<scalar>("deltaT");
-    s.nThreads = dict_.lookupOrDefault<label>("nThreads", 1);
-
-    // Verlet skin of the neighbour list (default: the DEM's, for discs
-    // chosen at each list build from the fastest particle's displacement,
-    // 0.1-0.8 d_min; 0.1 d_min in the slab): a wider skin means fewer list
-    // builds but more candidate pairs each step (docs/performance.md). An entry fixes it
-    if (dict_.found("neighbourSkin"))
-    {
-        scalar dMin = GREAT;
-        for (const dem::ParticleClass& c : s.classes)
+        if (mode == startMode::run)
         {
-            dMin = min(dMin, c.diameter);
+            bed_.checkRestart(restart);
         }
-        s.neighbourSkin = boundedEntry(dict_, "neighbourSkin", 0, dMin, true);
+        Info<< "Particles: " << size() << " read from " << restart << endl;
+        return;
     }
-    particleModel_.selectEngine(s, grid_);
-    return s;
+    if (mode == startMode::postProcess && !engine_.hasStates(mesh_.time()))
+    {
+        FatalErrorInFunction
+            << "Nothing to post-process in " << mesh_.time().path()
+            << ": no time directory has a particle state (uniform/dem.state);"
+            << " the case has not been run. Run dpmFoam2D first"
+            << exit(FatalError);
+    }
+    if (mode == startMode::postProcess)
+    {
+        // -postProcess reads the particles of the times a run saved
+        FatalErrorInFunction
+            << "No particle state " << restart << " for time "
+            << mesh_.time().timeName() << ": -postProcess works on the times"
+            << " a run has written" << nl << "    "
+            << (
+                   mesh_.time().value() > 0
+                 ? "The time is incomplete (a run killed while writing it?):"
+                   " leave it out (-time) or remove it"
+                 : "Run dpmFoam2D first (or leave time 0 out with -time)"
+               )
+            << exit(FatalError);
+    }
+    if (mode == startMode::run && mesh_.time().value() > 0)
+    {
+        // A restart without particles (a new bed starts at time 0): the
+        // run was killed while it wrote this time, or the state was removed
+        FatalErrorInFunction
+            << "No particle state " << restart << " for time "
+            << mesh_.time().timeName() << nl
+            << "    The time directory is incomplete (a run killed while"
+            << " writing it?): remove it and restart from an earlier time"
+            << exit(FatalError);
+    }
+
+    bed_.start();
 }
 
 
-std::vector<int> Foam::dpmCloud::classCounts() const
+void Foam::dpmCloud::advanceParticles()
 {
-    const dictionary& classes = dict_.subDict("classes");
-    std::vector<int> counts;
-    for (const word& name : classNames_)
+    if (frozen_)
     {
-        const dictionary& c = classes.subDict(name);
-        if (c.found("count"))
-        {
-            counts.push_back(c.get<label>("count"));
-        }
-        else
-        {
-            // A mass fraction of the bed's total mass
-            const scalar w = boundedEntry(c, "massFraction", 0, 1, false);
-            const scalar M = positiveEntry(dict_, "totalMass");
-            const scalar d = c.get<scalar>("diameter");
-            const scalar m =
-                c.get<scalar>("density")*constant::mathematical::pi*d*d*d/6;
-            counts.push_back(int(std::round(w*M/m)));
-        }
-        if (counts.back() < 1)
-        {
-            FatalIOErrorInFunction(c)
-                << "Class " << name << " in " << dict_.name()
-                << " has " << counts.back() << " particles; each class needs"
-                << " 'count' >= 1 (or a massFraction that gives one)"
-                << exit(FatalIOError);
-        }
+        exchange_.holdFrozen();
+        return;
     }
-    return counts;
+
+    engine_.dem().advance(dtStep_);
 }
 
 
@@ -238,14 +162,11 @@ Foam::dpmCloud::dpmCloud
         )
     ),
     grid_(mesh),
-    rhoGas_(gas.rho()),
     g_(g),
     classNames_(dict_.subDict("classes").toc()),
     drag_(dragModel::New(dict_, gas.rho(), gas.mu())),
     formulation_(couplingFormulation::New(dict_)),
     schedule_(couplingSchedule::New(dict_)),
-    couplingThreads_(1),
-    exchangeReady_(false),
     frozen_(dict_.lookupOrDefault<bool>("frozen", false)),
     sortInterval_
     (
@@ -262,42 +183,15 @@ Foam::dpmCloud::dpmCloud
     voidageMin_(boundedEntryOrDefault(dict_, "voidageMin", 0.1, 0, 1, true)),
     particleModel_(dict_, grid_, voidageMin_),
     slab_(particleModel_.slab()),
-    voidage_
+    engine_(dict_, grid_, classNames_),
+    bed_(dict_, grid_, classNames_, engine_, slab_, mesh.time().path()),
+    exchange_
     (
-        fieldIO("voidage", mesh, mode == startMode::run),
-        mesh,
-        dimensionedScalar("one", dimless, 1.0),
-        voidagePatchTypes(mesh, gas.inletPatch())
+        mesh, grid_, engine_, *drag_, *formulation_, particleModel_,
+        gas.rho(), g_, frozen_, voidageMin_, gas.inletPatch(),
+        mode == startMode::run, keepsExchange(mode)
     ),
-    particleFraction_
-    (
-        fieldIO("particleFraction", mesh, false),
-        mesh,
-        dimensionedScalar("zero", dimless, 0.0),
-        zeroGradientFvPatchScalarField::typeName
-    ),
-    mixtureNeeded_(drag_->needsMixture()),
-    Kc_
-    (
-        fieldIO("Kc", mesh, keepsExchange(mode)),
-        mesh,
-        dimensionedScalar(dimDensity/dimTime, Zero),
-        zeroGradientFvPatchScalarField::typeName
-    ),
-    Fp_
-    (
-        fieldIO("Fp", mesh, keepsExchange(mode)),
-        mesh,
-        dimensionedVector(dimForce/dimVolume, Zero),
-        zeroGradientFvPatchVectorField::typeName
-    ),
-    Ustar_
-    (
-        fieldIO("Ustar", mesh, keepsExchange(mode)),
-        mesh,
-        dimensionedVector(dimVelocity, Zero),
-        zeroGradientFvPatchVectorField::typeName
-    ),
+    fluidization_(engine_, *drag_, gas.rho()),
     dtStep_(mesh.time().deltaTValue())
 {
     Info<< "Coupling: " << formulation_->description().c_str()
@@ -312,32 +206,41 @@ Foam::dpmCloud::dpmCloud
             << exit(FatalIOError);
     }
 
-    checkEntries();
+    const particleChecks checks(dict_, classNames_);
+    checks.entries(mesh_.time());
     caseChecks::gravity(g_);
     caseChecks::bedGeometry(mesh_, grid_);
 
-    const dem::Settings settings = demSettings();
+    engine_.setRunRecord
+    (
+        "dragModel " + drag_->type() + "\n"
+        "formulation " + formulation_->type() + "\n"
+        "couplingSchedule " + schedule_->type() + "\n"
+    );
+    const dem::Settings settings = engine_.settings(g_, particleModel_);
     // The voidage model's own check first (slab3D: the spheres fit in the
     // slab), in its words rather than the DEM's
-    particleModel_.voidage().checkDiameters(dict_, diametersOf(settings));
-    checkDemStep(settings);
-    guarded
+    particleModel_.voidage().checkDiameters
     (
-        "Invalid particle settings",
-        [&]{ dem_.reset(new dem::Simulation(settings)); }
+        dict_, particleEngine::diametersOf(settings)
     );
+    checks.demStep(settings);
+    engine_.create(settings);
     Info<< "DEM: kick and drift loops for "
         << dem::streamingLoopsInUse().c_str()
         << " (environment variable DEM_SIMD = baseline or avx2 chooses;"
         << " the same bits)" << endl;
-    couplingThreads_ = settings.nThreads + schedule_->gasThreads();
-    drag_->setThreads(couplingThreads_);
+    // The coupling's loops run on the DEM's threads, and in the concurrent
+    // schedule on the gas's thread too (it is idle then)
+    const label couplingThreads = settings.nThreads + schedule_->gasThreads();
+    drag_->setThreads(couplingThreads);
+    exchange_.setThreads(couplingThreads);
     checkSettings(gas, mode);
 
     subSteps();         // the DEM step must divide the CFD step
     formulation_->checkBedDepth
     (
-        dict_, grid_, classDiameters(), slab_, voidageMin_
+        dict_, grid_, engine_.classDiameters(), slab_, voidageMin_
     );
     if (mode == startMode::run)
     {
@@ -353,15 +256,15 @@ Foam::dpmCloud::dpmCloud
         )
     );
 
-    updateVoidage();
+    exchange_.updateVoidage();
 
     // Keep the start voidage as the old-time level of the first step, as a
     // run that went through this time would (restarts continue exactly)
-    voidage_.oldTime();
+    exchange_.voidage().oldTime();
 
     if (keepsExchange(mode))
     {
-        readExchange();
+        exchange_.readSavedReaction();
     }
 }
 
@@ -372,91 +275,89 @@ Foam::dpmCloud::~dpmCloud()
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-// Sums by class (count x particle mass), not over the particles: they do not
-// depend on the particles' numbering, which sortByCell changes, so a restart
-// gets the same U0 to the last bit
-Foam::scalarList Foam::dpmCloud::classMasses() const
-{
-    labelList n(classNames_.size(), Zero);
-    for (label i = 0; i < size(); ++i)
-    {
-        ++n[dem_->classIndex()[i]];
-    }
-    const scalarList d(classDiameters());
-    const scalarList rho(classDensities());
-    scalarList m(n.size());
-    forAll(m, k)
-    {
-        m[k] = n[k]*rho[k]*constant::mathematical::pi*pow3(d[k])/6;
-    }
-    return m;
-}
-
-
-Foam::scalar Foam::dpmCloud::totalMass() const
-{
-    return sum(classMasses());
-}
-
-
-Foam::scalar Foam::dpmCloud::totalVolume() const
-{
-    const scalarList m(classMasses());
-    const scalarList rho(classDensities());
-    scalar V = 0;
-    forAll(m, k)
-    {
-        V += m[k]/rho[k];
-    }
-    return V;
-}
-
-
-Foam::scalarList Foam::dpmCloud::massFractions() const
-{
-    scalarList w(classMasses());
-    const scalar M = sum(w);
-    forAll(w, k) w[k] /= max(M, VSMALL);
-    return w;
-}
-
-
-Foam::scalarList Foam::dpmCloud::diametersOf(const dem::Settings& settings)
-{
-    scalarList d(settings.classes.size());
-    forAll(d, k) d[k] = settings.classes[k].diameter;
-    return d;
-}
-
-
-Foam::scalarList Foam::dpmCloud::classDiameters() const
-{
-    return diametersOf(dem_->settings());
-}
-
-
-Foam::scalarList Foam::dpmCloud::classDensities() const
-{
-    scalarList rho(classNames_.size());
-    forAll(rho, k) rho[k] = dem_->settings().classes[k].density;
-    return rho;
-}
-
-
 Foam::label Foam::dpmCloud::subSteps() const
 {
-    const scalar dtGas = mesh_.time().deltaTValue();
-    const scalar dtDem = dem_->settings().dt;
-    const label n = label(std::round(dtGas/dtDem));
-    if (n < 1 || mag(n*dtDem - dtGas) > 1e-9*dtGas)
+    return engine_.subSteps(mesh_.time().deltaTValue());
+}
+
+
+void Foam::dpmCloud::evolve
+(
+    const volVectorField& U,
+    const volScalarField& p_rgh,
+    const std::function<void()>& gasVoidage,
+    const std::function<void()>& gasStep,
+    solverTimers& timers
+)
+{
+    schedule_->step(*this, U, p_rgh, gasVoidage, gasStep, timers);
+}
+
+
+void Foam::dpmCloud::interpolateGas
+(
+    const volVectorField& U,
+    const volScalarField& p_rgh
+)
+{
+    // Renumber the particles by cell now and then; the overlaps follow the
+    // new numbers, the other per-particle arrays are made anew below
+    if
+    (
+        !frozen_ && sortInterval_ > 0
+     && engine_.dem().stepCount() % sortInterval_ == 0
+    )
     {
-        FatalIOErrorInFunction(dict_)
-            << "The DEM step 'deltaT' = " << dtDem << " in " << dict_.name()
-            << " does not divide the CFD step deltaT = " << dtGas
-            << " of system/controlDict; allowed: deltaT(CFD)/deltaT(DEM)"
-            << " a whole number >= 1" << exit(FatalIOError);
+        engine_.dem().sortByCell();
+        exchange_.updateOverlaps();
     }
-    return n;
+
+    dtStep_ = mesh_.time().deltaTValue();
+    exchange_.interpolateGas(U, p_rgh);
+}
+
+
+void Foam::dpmCloud::advance()
+{
+    engine_.guarded(advanceError, [&]{ advanceParticles(); });
+}
+
+
+void Foam::dpmCloud::advanceBeside(const std::function<void()>& gasStep)
+{
+    // One team of the threads that run the coupling's loops: its worker,
+    // which would otherwise spin idle through the gas step on the core the
+    // DEM needs, runs the DEM (its own loops nested inside, on nThreads);
+    // the gas stays on the main thread. The DEM touches only its own
+    // arrays and the inputs interpolateGas gave it, the gas only the
+    // cells' fields: nothing is shared. An exception must not leave the
+    // parallel region: the DEM's is kept and thrown after it.
+    std::exception_ptr demError;
+    omp_set_max_active_levels(2);
+    #pragma omp parallel num_threads(2)
+    {
+        // A team cut to one thread (OMP_THREAD_LIMIT) runs both in turn
+        const int thread = omp_get_thread_num();
+        if (thread == 0)
+        {
+            gasStep();
+        }
+        if (thread == 1 || omp_get_num_threads() == 1)
+        {
+            try
+            {
+                advanceParticles();
+            }
+            catch (...)
+            {
+                demError = std::current_exception();
+            }
+        }
+    }
+    if (demError)
+    {
+        engine_.guarded(advanceError, [&]{ std::rethrow_exception(demError); });
+    }
 }
 
 

@@ -9,13 +9,10 @@ License
     see the file LICENSE.
 -------------------------------------------------------------------------------
     dpmCloud's output: the particle files (particleWriter), the log's
-    summary and exchange balance, and the particle state (restart, or a bed
-    to reuse), written last at a write time so that a time with it is
-    complete.
+    summary, and the particle state of a write time (restart).
 \*---------------------------------------------------------------------------*/
 
 #include "dpmCloud.H"
-#include "faultInjection.H"
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -36,7 +33,7 @@ void Foam::dpmCloud::writeParticles()
 {
     writer_->write
     (
-        *dem_, voidageP_, gasVelocityP_,
+        engine_.dem(), exchange_.voidageP(), exchange_.gasVelocityP(),
         mesh_.time().value(), mesh_.time().timeName()
     );
 }
@@ -56,46 +53,26 @@ void Foam::dpmCloud::writeStartParticles(const volVectorField& U)
     // arrays of the file's own: the coupling's are left as the first step
     // makes them
     const label n = size();
-    const scalarField& eps = voidage_.primitiveField();
+    const scalarField& eps = exchange_.voidage().primitiveField();
     const vectorField& Uc = U.primitiveField();
-    const double* x = dem_->x();
-    const double* y = dem_->y();
+    const double* x = engine_.dem().x();
+    const double* y = engine_.dem().y();
     scalarField voidageP(n);
     vectorField gasVelocityP(n);
     for (label i = 0; i < n; ++i)
     {
         grid_.interpolate(x[i], y[i], eps, Uc, voidageP[i], gasVelocityP[i]);
     }
-    writer_->write(*dem_, voidageP, gasVelocityP, t, time.timeName());
-}
-
-
-void Foam::dpmCloud::reportBalance(Ostream& os) const
-{
-    vector particleForce = Zero;
-    if (K_.size() == size())
-    {
-        vectorField F;
-        exchangedForces(F);
-        for (const vector& Fi : F) particleForce += Fi;
-    }
-    const vector gasForce = gSum(Fp_.primitiveField())*grid_.cellVolume();
-
-    os  << "Exchange: force on particles " << particleForce
-        << " N, reaction mapped to the gas " << gasForce << " N" << nl;
-    particleModel_.voidage().reportBalance
-    (
-        os, size(), dem_->diameter(), particleFraction_.primitiveField()
-    );
+    writer_->write(engine_.dem(), voidageP, gasVelocityP, t, time.timeName());
 }
 
 
 void Foam::dpmCloud::report(Ostream& os) const
 {
-    const dem::Settings& s = dem_->settings();
+    const dem::Settings& s = engine_.dem().settings();
     std::vector<label> counts(classNames_.size(), 0);
-    for (label i = 0; i < size(); ++i) ++counts[dem_->classIndex()[i]];
-    const scalarList w = massFractions();
+    for (label i = 0; i < size(); ++i) ++counts[engine_.dem().classIndex()[i]];
+    const scalarList w = engine_.massFractions();
 
     os  << "Particles (" << dict_.name() << "):" << nl;
     forAll(classNames_, k)
@@ -104,22 +81,25 @@ void Foam::dpmCloud::report(Ostream& os) const
             << " particles, d = " << s.classes[k].diameter*1e3 << " mm, rho = "
             << s.classes[k].density << " kg/m3, mass fraction " << w[k] << nl;
     }
-    os  << "    total mass " << totalMass() << " kg" << nl
+    os  << "    total mass " << engine_.totalMass() << " kg" << nl
         << "    drag model " << drag_->type()
-        << (mixtureNeeded_ ? " (with the mixture of each cell)" : "") << nl
+        << (exchange_.mixtureNeeded() ? " (with the mixture of each cell)" : "")
+        << nl
         << "    bed depth (mesh thickness) " << grid_.depth()*1e3 << " mm, gas cells "
         << grid_.dx()*1e3 << " x " << grid_.dy()*1e3 << " mm ("
         << grid_.nx() << " x " << grid_.ny() << ")" << nl;
     if (slab_)
     {
-        reportSlab(os);
+        os  << "    slab mode: 3D spheres between walls z = 0 and z = "
+            << grid_.depth() << " m (the mesh's thickness); gas velocity z = 0"
+            << endl;
     }
     os
         << "    time steps: CFD " << mesh_.time().deltaTValue() << " s, DEM "
         << s.dt << " s (" << subSteps() << " sub-steps); safe bound "
         << dem::safeTimeStep(s) << " s (t_c/10), stable bound "
         << dem::stableTimeStep(s) << " s, eq. 7 bound "
-        << dem_->timeStepBound() << " s" << nl
+        << engine_.dem().timeStepBound() << " s" << nl
         << "    particle files every " << writeInterval_ << " s in "
         << mesh_.time().path()/"particles" << endl;
 }
@@ -133,27 +113,8 @@ bool Foam::dpmCloud::writeObject
     const bool
 ) const
 {
-    save(stateFile(mesh_.time().timeName()));
+    engine_.save(engine_.stateFile(mesh_.time(), mesh_.time().timeName()));
     return true;
-}
-
-
-void Foam::dpmCloud::save(const fileName& file) const
-{
-    faultInjection::at("stateWrite");
-    // The write's own error (file, OS reason), not the settings' file
-    try
-    {
-        dem_->setRunRecord(runRecord());
-        dem_->save(file);
-    }
-    catch (const dem::Error& err)
-    {
-        FatalErrorInFunction
-            << "Cannot write the particle state: " << err.what()
-            << exit(FatalError);
-    }
-    faultInjection::at("stateWrite", "done");
 }
 
 

@@ -330,8 +330,9 @@ int main(int argc, char *argv[])
         }
     }
 
-    // The mixture of the cells (solidsMixture.H, as dpmCloud maps it): the
-    // Sauter mean diameter of discs laid in the grid with their overlaps
+    // The mixture of the cells (solidsMixture.H, as gasParticleExchange
+    // maps it): the Sauter mean diameter of discs laid in the grid with
+    // their overlaps
     {
         const cartesianGrid2D grid(mesh);
         const label nCells = grid.nx()*grid.ny();

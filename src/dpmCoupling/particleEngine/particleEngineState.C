@@ -8,13 +8,17 @@ License
     Public License, version 3 or (at your option) any later version;
     see the file LICENSE.
 -------------------------------------------------------------------------------
-    dpmCloud: what a restart checks beyond the DEM's own settings (which the
-    state file compares itself): the coupling models the run was made with,
-    recorded in each particle state, and states of the other engine (a slab
-    state in a discs2D case, or the reverse), named with the fix.
+    particleEngine: the particle state's files. A state is written last at
+    a write time, so that a time with it is complete; a restart checks,
+    beyond the DEM's own settings (which the state file compares itself),
+    the coupling models the run was made with, recorded in each state, and
+    states of the other engine (a slab state in a discs2D case, or the
+    reverse), named with the fix.
 \*---------------------------------------------------------------------------*/
 
-#include "dpmCloud.H"
+#include "particleEngine.H"
+#include "Time.H"
+#include "faultInjection.H"
 
 #include <sstream>
 
@@ -43,18 +47,78 @@ std::vector<std::pair<std::string, std::string>> recordEntries
 } // End anonymous namespace
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-std::string Foam::dpmCloud::runRecord() const
+Foam::fileName Foam::particleEngine::stateFile
+(
+    const Time& time,
+    const word& timeName
+) const
 {
-    return
-        "dragModel " + drag_->type() + "\n"
-        "formulation " + formulation_->type() + "\n"
-        "couplingSchedule " + schedule_->type() + "\n";
+    return time.path()/timeName/"uniform"/"dem.state";
 }
 
 
-void Foam::dpmCloud::checkRestartModels(const fileName& restart) const
+bool Foam::particleEngine::hasStates(const Time& time) const
+{
+    for (const instant& t : Time::findTimes(time.path()))
+    {
+        if (isFile(stateFile(time, t.name())))
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
+void Foam::particleEngine::save(const fileName& file) const
+{
+    faultInjection::at("stateWrite");
+    // The write's own error (file, OS reason), not the settings' file
+    try
+    {
+        dem_->setRunRecord(runRecord_);
+        dem_->save(file);
+    }
+    catch (const dem::Error& err)
+    {
+        FatalErrorInFunction
+            << "Cannot write the particle state: " << err.what()
+            << exit(FatalError);
+    }
+    faultInjection::at("stateWrite", "done");
+}
+
+
+void Foam::particleEngine::loadRestart
+(
+    const fileName& restart,
+    const bool slab
+)
+{
+    try
+    {
+        dem_->load(restart);
+    }
+    catch (const dem::ForeignStateError& err)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Cannot restart from " << restart << ": " << err.what()
+            << ": " << foreignStateFix(err, slab, true).c_str()
+            << exit(FatalIOError);
+    }
+    catch (const dem::Error& err)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Cannot read the particle state (settings in "
+            << dict_.name() << "):" << nl << "    " << err.what()
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::particleEngine::checkRestartModels(const fileName& restart) const
 {
     const std::string inFile = dem_->runRecord();
     if (inFile.empty())
@@ -67,7 +131,7 @@ void Foam::dpmCloud::checkRestartModels(const fileName& restart) const
         return;
     }
     std::string differ, was;
-    for (const auto& [name, here] : recordEntries(runRecord()))
+    for (const auto& [name, here] : recordEntries(runRecord_))
     {
         for (const auto& [entry, there] : recordEntries(inFile))
         {
@@ -99,13 +163,14 @@ void Foam::dpmCloud::checkRestartModels(const fileName& restart) const
 }
 
 
-std::string Foam::dpmCloud::foreignStateFix
+std::string Foam::particleEngine::foreignStateFix
 (
     const dem::ForeignStateError& err,
+    const bool slab,
     const bool restart
 ) const
 {
-    const word here(slab_ ? "slab3D" : "discs2D");
+    const word here(slab ? "slab3D" : "discs2D");
     const word there(err.fileDimension() == 3 ? "slab3D" : "discs2D");
     const std::string set =
         "this case runs " + here + ": set voidageModel " + there + " in "
@@ -114,19 +179,8 @@ std::string Foam::dpmCloud::foreignStateFix
         restart
       ? set + " to continue the run, or start anew from time 0 with a bed of"
         " this case's (remove the time directories and 0/uniform)"
-      : set + ", or pack a " + (slab_ ? "slab" : "2D") + " bed (dpmPackBed)";
+      : set + ", or pack a " + (slab ? "slab" : "2D") + " bed (dpmPackBed)";
 }
-
-
-void Foam::dpmCloud::warnUncheckedState() const
-{
-    if (!dem_->loadWarning().empty())
-    {
-        WarningInFunction
-            << dem_->loadWarning().c_str() << endl;
-    }
-}
-
 
 
 // ************************************************************************* //

@@ -8,25 +8,26 @@ License
     Public License, version 3 or (at your option) any later version;
     see the file LICENSE.
 -------------------------------------------------------------------------------
-    dpmCloud's solids mixture, kept when the drag model needs it (Beetstra):
+    gasParticleExchange: the solids mixture, kept when the drag model needs it (Beetstra):
     the per-class volume fractions of the cells, mapped with the voidage
     model's shares, and the Sauter mean diameter at each particle.
 \*---------------------------------------------------------------------------*/
 
-#include "dpmCloud.H"
+#include "gasParticleExchange.H"
 #include "solidsMixture.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::dpmCloud::updateMixture()
+void Foam::gasParticleExchange::updateMixture()
 {
-    const label n = size();
+    const dem::Simulation& dem = engine_.dem();
+    const label n = engine_.size();
     const label nCells = mesh_.nCells();
     const scalar Vc = grid_.cellVolume();
-    const double* d = dem_->diameter();
-    const int* cls = dem_->classIndex();
+    const double* d = dem.diameter();
+    const int* cls = dem.classIndex();
 
-    classFraction_.setSize(classNames_.size());
+    classFraction_.setSize(label(dem.settings().classes.size()));
     forAll(classFraction_, k)
     {
         classFraction_[k].setSize(nCells);
@@ -50,17 +51,18 @@ void Foam::dpmCloud::updateMixture()
 }
 
 
-void Foam::dpmCloud::interpolateMixture()
+void Foam::gasParticleExchange::interpolateMixture()
 {
-    const label n = size();
-    const double* x = dem_->x();
-    const double* y = dem_->y();
-    const double* d = dem_->diameter();
+    const dem::Simulation& dem = engine_.dem();
+    const label n = engine_.size();
+    const double* x = dem.x();
+    const double* y = dem.y();
+    const double* d = dem.diameter();
     const scalarField& phiP = particleFraction_.primitiveField();
 
     scalarField& dMean = mixtureP_.sauterDiameter;
     dMean.setSize(n);
-    #pragma omp parallel for num_threads(couplingThreads_) schedule(static)
+    #pragma omp parallel for num_threads(nThreads_) schedule(static)
     for (label i = 0; i < n; ++i)
     {
         label cells[4];

@@ -7,12 +7,12 @@ License
     This file is part of dpmFoam2D, free software under the GNU General
     Public License, version 3 or (at your option) any later version;
     see the file LICENSE.
+-------------------------------------------------------------------------------
+    gasParticleExchange: the log's exchange balance, and the reaction a
+    concurrent run saved for its gas's next step, read at a restart.
 \*---------------------------------------------------------------------------*/
 
-#include "dpmCloud.H"
-
-#include <exception>
-#include <omp.h>
+#include "gasParticleExchange.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -45,9 +45,30 @@ void readSavedValues(FieldType& field, const Foam::fvMesh& mesh)
 } // End anonymous namespace
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dpmCloud::readExchange()
+void Foam::gasParticleExchange::reportBalance(Ostream& os) const
+{
+    vector particleForce = Zero;
+    if (K_.size() == engine_.size())
+    {
+        vectorField F;
+        exchangedForces(F);
+        for (const vector& Fi : F) particleForce += Fi;
+    }
+    const vector gasForce = gSum(Fp_.primitiveField())*grid_.cellVolume();
+
+    os  << "Exchange: force on particles " << particleForce
+        << " N, reaction mapped to the gas " << gasForce << " N" << nl;
+    particleModel_.voidage().reportBalance
+    (
+        os, engine_.size(), engine_.dem().diameter(),
+        particleFraction_.primitiveField()
+    );
+}
+
+
+void Foam::gasParticleExchange::readSavedReaction()
 {
     // Kc, Fp and U* are written only by a concurrent run; with them, the
     // voidage of the time is the one its gas took (a step behind the
@@ -72,50 +93,10 @@ void Foam::dpmCloud::readExchange()
     readSavedValues(Fp_, mesh_);
     readSavedValues(Ustar_, mesh_);
     readSavedValues(voidage_, mesh_);
-    exchangeReady_ = true;
+    reactionReady_ = true;
     Info<< "Coupling: the reaction and the gas's voidage of time "
         << mesh_.time().timeName() << " read (Kc, Fp, Ustar, voidage); the"
         << " concurrent schedule continues from them" << endl;
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::dpmCloud::advanceBeside(const std::function<void()>& gasStep)
-{
-    // One team of the threads that run the coupling's loops: its worker,
-    // which would otherwise spin idle through the gas step on the core the
-    // DEM needs, runs the DEM (its own loops nested inside, on nThreads);
-    // the gas stays on the main thread. The DEM touches only its own
-    // arrays and the inputs interpolateGas gave it, the gas only the
-    // cells' fields: nothing is shared. An exception must not leave the
-    // parallel region: the DEM's is kept and thrown after it.
-    std::exception_ptr demError;
-    omp_set_max_active_levels(2);
-    #pragma omp parallel num_threads(2)
-    {
-        // A team cut to one thread (OMP_THREAD_LIMIT) runs both in turn
-        const int thread = omp_get_thread_num();
-        if (thread == 0)
-        {
-            gasStep();
-        }
-        if (thread == 1 || omp_get_num_threads() == 1)
-        {
-            try
-            {
-                advanceParticles();
-            }
-            catch (...)
-            {
-                demError = std::current_exception();
-            }
-        }
-    }
-    if (demError)
-    {
-        guarded(advanceError, [&]{ std::rethrow_exception(demError); });
-    }
 }
 
 

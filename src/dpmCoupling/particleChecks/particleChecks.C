@@ -7,27 +7,33 @@ License
     This file is part of dpmFoam2D, free software under the GNU General
     Public License, version 3 or (at your option) any later version;
     see the file LICENSE.
--------------------------------------------------------------------------------
-    dpmCloud: the checks of its settings that go beyond one entry's range
-    (unknown entries, gravity, the gas against the particles, threads, the
-    particle output interval).
 \*---------------------------------------------------------------------------*/
 
-#include "dpmCloud.H"
+#include "particleChecks.H"
 #include "gasProperties.H"
-#include "caseChecks.H"
+#include "dragModel.H"
 #include "knownEntries.H"
 #include "particlePropertiesEntries.H"
-#include "mathematicalConstants.H"
+#include "Time.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::dpmCloud::checkEntries() const
+Foam::label Foam::particleChecks::smallestClass(const dem::Settings& settings)
+{
+    int k = 0;
+    dem::timeStepBound(settings, &k);
+    return label(k);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::particleChecks::entries(const Time& time) const
 {
     const string where("constant/particleProperties");
 
     // The coefficients of every drag model may stand at the top level
-    wordHashSet alsoAllowed(settingsEntries(dict_.objectPath(), mesh_.time()));
+    wordHashSet alsoAllowed(settingsEntries(dict_.objectPath(), time));
     for (const word& model : dragModel::dictionaryConstructorTablePtr_->toc())
     {
         alsoAllowed.insert(model + "Coeffs");
@@ -63,15 +69,14 @@ void Foam::dpmCloud::checkEntries() const
 }
 
 
-void Foam::dpmCloud::checkSettings
+void Foam::particleChecks::gasDensity
 (
     const gasProperties& gas,
-    const startMode mode
+    const scalarList& rhoP
 ) const
 {
     // The gas must be lighter than every class, or nothing can fluidize
     // (the Archimedes number of Umf turns negative)
-    const scalarList rhoP(classDensities());
     const label lightest = findMin(rhoP);
     if (!(gas.rho() < rhoP[lightest]))
     {
@@ -85,29 +90,26 @@ void Foam::dpmCloud::checkSettings
             << gas.operatingPressure()*rhoP[lightest]/gas.rho() << ") bar"
             << exit(FatalIOError);
     }
+}
 
-    if (mode == startMode::postProcess) return;
 
-    caseChecks::threadCount
-    (
-        dict_, "constant/particleProperties", dem_->settings().nThreads,
-        schedule_->gasThreads() > 0
-    );
-
-    if (mode != startMode::run) return;
-
+void Foam::particleChecks::writeInterval
+(
+    const scalar interval,
+    const scalar dtGas
+) const
+{
     // Particle files on the requested times: the run writes one when a
     // step lands on a multiple of writeInterval, so the interval must be
     // a whole number of CFD steps (else the files come at uneven times, or
     // every step when the interval is below the step)
-    const scalar dtGas = mesh_.time().deltaTValue();
-    const scalar steps = writeInterval_/dtGas;
+    const scalar steps = interval/dtGas;
     const label n = label(std::round(steps));
     if (n < 1 || mag(steps - n) > 1e-6*steps)
     {
         const label below = max(label(std::floor(steps)), 1);
         FatalIOErrorInFunction(dict_)
-            << "Entry 'writeInterval' = " << writeInterval_ << " in "
+            << "Entry 'writeInterval' = " << interval << " in "
             << "constant/particleProperties is not a whole multiple of the CFD"
             << " step deltaT = " << dtGas << " of system/controlDict: the"
             << " particle files would "
@@ -118,7 +120,7 @@ void Foam::dpmCloud::checkSettings
 }
 
 
-void Foam::dpmCloud::checkDemStep(const dem::Settings& settings) const
+void Foam::particleChecks::demStep(const dem::Settings& settings) const
 {
     // The bounds need valid particles and contact: an invalid one is the
     // DEM's to name (dem::Simulation, next)
@@ -193,27 +195,6 @@ void Foam::dpmCloud::checkDemStep(const dem::Settings& settings) const
             << " more than 1 % (docs/model.md, \"The DEM step's bound\");"
             << " a step of at most " << safe << " s is accurate" << endl;
     }
-}
-
-
-Foam::label Foam::dpmCloud::smallestClass(const dem::Settings& settings)
-{
-    int k = 0;
-    dem::timeStepBound(settings, &k);
-    return label(k);
-}
-
-
-bool Foam::dpmCloud::hasParticleStates() const
-{
-    for (const instant& t : Time::findTimes(mesh_.time().path()))
-    {
-        if (isFile(stateFile(t.name())))
-        {
-            return true;
-        }
-    }
-    return false;
 }
 
 

@@ -7,30 +7,29 @@ License
     This file is part of dpmFoam2D, free software under the GNU General
     Public License, version 3 or (at your option) any later version;
     see the file LICENSE.
--------------------------------------------------------------------------------
-    dpmCloud: the gas velocities at which the case's drag model carries its
-    particles - a lone particle (terminal velocity), a class in a uniform
-    bed of the dictionary's mixture or alone, and the whole mixture
-    (minimum fluidization velocity). Every one is a force balance on
-    resting particles, solved by bisection since the drag grows with the
-    gas velocity.
-
-    The drag models give formulation B's coefficient (the gas sees the
-    whole pressure gradient, the particles only the drag and the buoyancy):
-    at rest in a bed carried by the gas, the drag on each particle carries
-    its weight less buoyancy, V_k (rho_k - rho_g) g, at the interstitial
-    slip U/eps. Formulation A (drag eps_g K_B plus -V_k grad p) gives the
-    same balance for classes of one density; for classes of different
-    densities their share of the bed's pressure gradient would differ, and
-    that is not computed here. The voidage is the one the drag sees.
 \*---------------------------------------------------------------------------*/
 
-#include "dpmCloud.H"
+#include "fluidizationVelocities.H"
 #include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fluidizationVelocities::fluidizationVelocities
+(
+    const particleEngine& engine,
+    const dragModel& drag,
+    const scalar rhoGas
+)
+:
+    engine_(engine),
+    drag_(drag),
+    rhoGas_(rhoGas)
+{}
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::scalar Foam::dpmCloud::restingDrag
+Foam::scalar Foam::fluidizationVelocities::restingDrag
 (
     const scalar eps,
     const scalar d,
@@ -43,12 +42,12 @@ Foam::scalar Foam::dpmCloud::restingDrag
     mixture.sauterDiameter = scalarField(1, dMean);
     scalarField K(1);
     // The particle rests: the slip is the interstitial velocity U/eps
-    drag_->dragCoefficient(voidage, diameter, scalarField(1, U/eps), mixture, K);
+    drag_.dragCoefficient(voidage, diameter, scalarField(1, U/eps), mixture, K);
     return K[0]*U/eps;
 }
 
 
-Foam::scalar Foam::dpmCloud::velocityCarrying
+Foam::scalar Foam::fluidizationVelocities::velocityCarrying
 (
     const scalar eps,
     const scalarList& weights,
@@ -58,7 +57,7 @@ Foam::scalar Foam::dpmCloud::velocityCarrying
 {
     if (!(load > 0)) return 0;
 
-    const scalarList d(classDiameters());
+    const scalarList d(engine_.classDiameters());
     auto drag = [&](const scalar U)
     {
         scalar F = 0;
@@ -79,31 +78,31 @@ Foam::scalar Foam::dpmCloud::velocityCarrying
 }
 
 
-Foam::scalar Foam::dpmCloud::buoyantWeight
+Foam::scalar Foam::fluidizationVelocities::buoyantWeight
 (
     const label classi,
     const scalar g
 ) const
 {
-    const scalar d = classDiameters()[classi];
+    const scalar d = engine_.classDiameters()[classi];
     return
         constant::mathematical::pi*pow3(d)/6
-       *(classDensities()[classi] - rhoGas_)*g;
+       *(engine_.classDensities()[classi] - rhoGas_)*g;
 }
 
 
-Foam::scalarList Foam::dpmCloud::unitWeight(const label classi) const
+Foam::scalarList Foam::fluidizationVelocities::unitWeight(const label classi) const
 {
-    scalarList w(classNames_.size(), Zero);
+    scalarList w(engine_.classDiameters().size(), Zero);
     w[classi] = 1;
     return w;
 }
 
 
-Foam::scalar Foam::dpmCloud::recipeSauterDiameter() const
+Foam::scalar Foam::fluidizationVelocities::recipeSauterDiameter() const
 {
-    const std::vector<int> n(classCounts());
-    const scalarList d(classDiameters());
+    const std::vector<int> n(engine_.classCounts());
+    const scalarList d(engine_.classDiameters());
     scalar sum3 = 0, sum2 = 0;
     forAll(d, k)
     {
@@ -116,7 +115,7 @@ Foam::scalar Foam::dpmCloud::recipeSauterDiameter() const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::dpmCloud::terminalVelocity
+Foam::scalar Foam::fluidizationVelocities::terminalVelocity
 (
     const label classi,
     const scalar g
@@ -127,7 +126,7 @@ Foam::scalar Foam::dpmCloud::terminalVelocity
 }
 
 
-Foam::scalar Foam::dpmCloud::carryingVelocity
+Foam::scalar Foam::fluidizationVelocities::carryingVelocity
 (
     const label classi,
     const scalar eps,
@@ -138,15 +137,19 @@ Foam::scalar Foam::dpmCloud::carryingVelocity
     return velocityCarrying
     (
         eps, unitWeight(classi),
-        alone ? classDiameters()[classi] : recipeSauterDiameter(),
+        alone ? engine_.classDiameters()[classi] : recipeSauterDiameter(),
         buoyantWeight(classi, g)
     );
 }
 
 
-Foam::scalar Foam::dpmCloud::mixtureUmf(const scalar eps, const scalar g) const
+Foam::scalar Foam::fluidizationVelocities::mixtureUmf
+(
+    const scalar eps,
+    const scalar g
+) const
 {
-    const std::vector<int> n(classCounts());
+    const std::vector<int> n(engine_.classCounts());
     scalarList counts(n.size());
     scalar load = 0;
     forAll(counts, k)
