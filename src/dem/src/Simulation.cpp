@@ -184,10 +184,6 @@ const BedRecipe* Simulation::recipe() const
 {
     return slab_ ? slab_->recipe() : system_->recipe();
 }
-const std::string& Simulation::loadWarning() const
-{
-    return slab_ ? slab_->loadWarning() : system_->loadWarning();
-}
 const std::string& Simulation::runRecord() const
 {
     return slab_ ? slab_->runRecord() : system_->runRecord();

@@ -102,8 +102,6 @@ public:
     double neighbourSkin() const { return skin_; }
     /// How the particles were made (packBed, or the file they came from); none otherwise.
     const BedRecipe* recipe() const { return recipe_ ? &*recipe_ : nullptr; }
-    /// What the last load() could not check (a state of an older version); empty if none.
-    const std::string& loadWarning() const { return loadWarning_; }
     /// The caller's record of the run (its models), saved with the state; load() sets the file's.
     const std::string& runRecord() const { return runRecord_; }
     void setRunRecord(const std::string& record) { runRecord_ = record; }
@@ -185,7 +183,6 @@ protected:
     double maxOverlap_ = 0.0;
     double meanWeight_ = 1.0;           // weight of this sub-step's velocity in the CFD-step mean
     std::optional<BedRecipe> recipe_;   // how the particles were made, if packBed made them
-    std::string loadWarning_;           // see loadWarning()
     std::string runRecord_;             // see runRecord()
 };
 

@@ -268,9 +268,6 @@ public:
     /// The recipe of the particles (packBed, or the file they were loaded from); none if
     /// they were placed otherwise.
     const BedRecipe* recipe() const;
-    /// What the last load() or loadBed() could not check; empty if none (every state of the
-    /// current version is checked whole).
-    const std::string& loadWarning() const;
     /// A text the caller keeps with the state (what the run was made with: its coupling
     /// models), saved by save(); load() and loadBed() set the file's (empty for a file
     /// converted from a version before the record).
