@@ -1,18 +1,19 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The order of the restitution's error in the DEM step (README.md, "Findings"): head-on
-// impacts (a pair and the floor, both engines, both laws) at dt = t_c/25, t_c/50, t_c/100,
-// t_c/200, the observed order log2(err(dt)/err(dt/2)) against the integrator's; and e at
-// the paper's step, 1e-5 s.
+// The order of the restitution's error in the DEM step (README.md, "Restitution and the DEM
+// step"): head-on impacts (a pair and the floor, both engines, both laws) at dt = t_c/25,
+// t_c/50, t_c/100, t_c/200, the observed order log2(err(dt)/err(dt/2)) against the
+// integrator's; and e at the paper's step, 1e-5 s.
 //
 // Expected order 1. The step is velocity Verlet (half-kick, drift, forces, half-kick) with
 // the dashpot fed the half-step velocity v(t - dt/2) = v - (dt/2) x'' + O(dt^2): to O(dt^2)
 // the scheme integrates (m - eta dt/2) x'' = -kn x - eta x', a mass m (1 - zeta w dt)
-// (w = sqrt(kn/m)), so the damping ratio is zeta (1 + zeta w dt/2) and e changes by
-// L w dt/(w t_c), L = (w t_c) zeta^2/2 de/dzeta ("lag"). And the first force, sampled at the
+// (w = sqrt(kn/m)), so the damping ratio is zeta (1 + zeta w dt/2) and e changes by L/N,
+// N = t_c/dt, L = (w t_c) zeta^2/2 de/dzeta ("lag"). And the first force, sampled at the
 // first step with an overlap, acts from half a step before it: a contact that starts a
 // fraction phi of a step after a step misses the dashpot's impulse eta v0 dt (1/2 - phi),
-// and e changes by A (1 - 2 phi)/N, A = (w t_c) zeta e ("onset", 0 averaged over phi).
+// its speed is as if 1 + zeta w dt (1 - 2 phi) times higher, and e changes by
+// A (1 - 2 phi)/N, A = (w t_c) zeta e ("onset", 0 averaged over phi).
 // Both first order; the parting adds none: the clamped force reaches zero continuously.
 // The Hertz law's dashpot starts at zero (delta^1/4): its onset error is O(dt^5/4), and
 // the lag keeps the law first order.
