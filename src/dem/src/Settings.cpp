@@ -39,7 +39,10 @@ void requireRestitution(double value, const std::string& name)
 {
     if (!(value > 0.0 && value <= 1.0)) {
         // The clamped dashpot leaves a rebound at any finite damping (model.md, "Particles")
-        const std::string why = value == 0.0 ? ": e = 0 would need an infinite damping" : "";
+        const std::string why = value == 0.0 ? ": e = 0 would need an infinite damping (a "
+                                               "normal force clamped at zero rebounds at any "
+                                               "finite one); a small e such as 0.01 is "
+                                               "representable" : "";
         throw Error(name + " = " + formatValue(value) + " is outside (0, 1]" + why);
     }
 }

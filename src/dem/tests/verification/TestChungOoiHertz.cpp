@@ -124,6 +124,22 @@ TEST(ChungOoiHertz, Test3RestitutionMatchesTheInputAtEveryE)
     }
 }
 
+TEST(ChungOoiHertz, Test3SmallRestitutionsMatchTheInput)
+{
+    // The overdamped end (e = 0 is refused, README.md): Kratos's 1e-3 at dt = t_c/1000
+    for (int dimension : {2, 3}) {
+        for (bool wall : {true, false}) {
+            for (double e : {0.01, 0.05, 0.1, 0.13, 0.14}) {
+                const Peak p = normalImpact(dimension, wall, 5e-3, 4000.0, 3.8e11, 0.23, 3.9, e, 1000.0);
+                std::printf("  test 3 %-4s %s e %.2f: DEM %.5f at t_c/1000\n", engineName(dimension),
+                            wall ? "wall" : "pair", e, p.restitution);
+                EXPECT_NEAR(p.restitution, e, 1e-3)
+                    << engineName(dimension) << (wall ? " wall" : " pair") << " e " << e;
+            }
+        }
+    }
+}
+
 namespace {
 
 // Test 4: Al oxide; tests 5 and 6: Al alloy (kn, kt unused under HertzMindlin)
