@@ -211,13 +211,14 @@ Foam::dpmCloud::dpmCloud
     caseChecks::gravity(g_);
     caseChecks::bedGeometry(mesh_, grid_);
 
+    const dem::Settings settings = engine_.settings(g_, particleModel_);
     engine_.setRunRecord
     (
         "dragModel " + drag_->type() + "\n"
         "formulation " + formulation_->type() + "\n"
         "couplingSchedule " + schedule_->type() + "\n"
+        "contactLaw " + dem::contactLawName(settings.contact.law) + "\n"
     );
-    const dem::Settings settings = engine_.settings(g_, particleModel_);
     // The voidage model's own check first (slab3D: the spheres fit in the
     // slab), in its words rather than the DEM's
     particleModel_.voidage().checkDiameters

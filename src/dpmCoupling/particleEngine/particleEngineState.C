@@ -126,7 +126,7 @@ void Foam::particleEngine::checkRestartModels(const fileName& restart) const
         WarningInFunction
             << "The particle state " << restart << " records no coupling"
             << " models (a state of an older dpmFoam2D): dragModel,"
-            << " formulation and couplingSchedule of " << dict_.name()
+            << " formulation, couplingSchedule and contactLaw of " << dict_.name()
             << " cannot be checked against the run it continues" << endl;
         return;
     }
