@@ -64,8 +64,8 @@ class Variant:
     # Edits that leave the packed bed as the template's: the gas's numerics
     # and closures, the CFD step. Any other edit (particles, contact, voidage
     # model, mesh, counts) gets the variant beds of its own, packed with its
-    # edits (a bed records the mesh's box as blockMesh computes it: other cell
-    # counts give the same box to within a last digit, which the bed refuses).
+    # edits (a packing depends on the box to its last digit, and blockMesh
+    # gives other cell counts a box a last digit apart).
     GAS_ONLY_FILES = ("system/fvSchemes", "system/fvSolution", "constant/gasProperties")
     GAS_ONLY_ENTRIES = {"system/controlDict": ("deltaT",)}
     GAS_ONLY_PARTICLE_ENTRIES = ("dragModel", "formulation")

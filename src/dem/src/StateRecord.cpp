@@ -58,9 +58,14 @@ bool sameCoordinate(double a, double b, double extent)
     return a == b || std::abs(a - b) <= 1e-12 * extent;
 }
 
+double extentOf(const Box& b)
+{
+    return std::max(std::abs(b.xMax - b.xMin), std::abs(b.yMax - b.yMin));
+}
+
 bool sameBox(const Box& a, const Box& b)
 {
-    const double extent = std::max(std::abs(b.xMax - b.xMin), std::abs(b.yMax - b.yMin));
+    const double extent = extentOf(b);
     return sameCoordinate(a.xMin, b.xMin, extent) && sameCoordinate(a.xMax, b.xMax, extent)
            && sameCoordinate(a.yMin, b.yMin, extent) && sameCoordinate(a.yMax, b.yMax, extent);
 }
@@ -114,8 +119,7 @@ std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
     }
     const std::size_t box = static_cast<std::size_t>(    // box xMin, xMax, yMin, yMax
         std::find(names.begin(), names.end(), "box xMin") - names.begin());
-    const double extent = std::max(std::abs(here[box + 1] - here[box]),
-                                   std::abs(here[box + 3] - here[box + 2]));
+    const double extent = extentOf({here[box], here[box + 1], here[box + 2], here[box + 3]});
     std::vector<Difference> d;
     for (std::size_t k = 0; k + 1 < here.size(); ++k) {   // not the skin
         if (inFile[k] == here[k]) continue;
