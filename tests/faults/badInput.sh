@@ -11,7 +11,9 @@
 #
 # <setup> runs in the case first; <command> (default dpmFoam2D) is run
 # there with a 180-s limit, its output in log.command. The names must be
-# distinct; at least minimumRows rows in all (the issue's 50).
+# distinct; at least minimumRows rows in all (50).
+# BADINPUT_ONLY=<regex> runs only the rows whose name matches (a check of
+# one row while editing it; the count is then not checked).
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 
@@ -24,6 +26,7 @@ declare -A seen
 badInput()
 {
     local name="$1" expect="$2" pattern="$3" setup="$4" command="${5:-dpmFoam2D}"
+    [[ "$name" =~ ${BADINPUT_ONLY:-.} ]] || return 0
     nRows=$((nRows + 1))
     [ -z "${seen[$name]:-}" ] || { echo "FAIL $name: row name used twice"; nFailed=$((nFailed + 1)); return; }
     seen[$name]=1
@@ -60,5 +63,5 @@ done
 
 echo "$nRows rows"
 [ "$nFailed" = 0 ] || fail "$nFailed of $nRows bad inputs were not reported as they should be"
-[ "$nRows" -ge "$minimumRows" ] || fail "only $nRows rows (at least $minimumRows wanted)"
+[ -n "${BADINPUT_ONLY:-}" ] || [ "$nRows" -ge "$minimumRows" ] || fail "only $nRows rows (at least $minimumRows wanted)"
 pass "every one of $nRows bad inputs gives its message"

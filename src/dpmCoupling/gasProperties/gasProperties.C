@@ -55,8 +55,8 @@ Foam::gasProperties::gasProperties(const objectRegistry& obr)
     (
         *this, entries(), "constant/gasProperties",
         settingsEntries(objectPath(), obr.time()),
-        "and the entries of #included settings files and of"
-        " constant/caseSettings"
+        "and the entries of the settings files that the case's"
+        " dictionaries #include"
     );
 
     const bool byVelocity = found("U0");

@@ -41,8 +41,8 @@ void Foam::particleChecks::entries(const Time& time) const
     checkKnownEntries
     (
         dict_, particlePropertiesEntries::top(), where, alsoAllowed,
-        "and <dragModel>Coeffs, the entries of #included settings files"
-        " and of constant/caseSettings"
+        "and <dragModel>Coeffs and the entries of the settings files"
+        " that the case's dictionaries #include"
     );
 
     for (const entry& e : dict_.subDict("classes"))
