@@ -188,12 +188,85 @@ TEST(BedRecord, RestartMismatchNamesTheSetting)
     std::remove(path.c_str());
 }
 
+namespace {
+
+/// The paper's particles and walls under HertzMindlin, of Young's modulus 1e7 Pa and
+/// Poisson's ratio 0.3 (dt = 1e-5 s is below the law's bound, 7e-5 s).
+Settings hertzSettings()
+{
+    Settings s = settings();
+    s.contact.law = ContactLawType::hertzMindlin;
+    for (ParticleClass& c : s.classes) {
+        c.youngsModulus = 1e7;
+        c.poissonRatio = 0.3;
+    }
+    s.contact.wallYoungsModulus = 1e7;
+    s.contact.wallPoissonRatio = 0.3;
+    return s;
+}
+
+/// The message of loading, for a bed of `recipe()`, the bed packed under `made` into a
+/// simulation of `used`.
+std::string loadedUnder(const Settings& made, const Settings& used, const std::string& name)
+{
+    const std::string path = tempPath(name);
+    Simulation packed(made);
+    packed.packBed(recipe());
+    packed.save(path);
+    Simulation sim(used);
+    const std::string what = errorOf([&] { sim.loadBed(path, recipe()); });
+    std::remove(path.c_str());
+    return what;
+}
+
+} // namespace
+
+// Every contact setting that shapes a bed is in its record: a bed packed with another law,
+// rolling friction, tangential damping or Young's modulus is refused naming it.
+TEST(BedRecord, AnotherContactLawRollingFrictionOrModulusIsNamed)
+{
+    std::string what = loadedUnder(hertzSettings(), settings(), "bedHertz.state");
+    EXPECT_NE(what.find("other settings: contact law = HertzMindlin in the file, linear here"),
+              std::string::npos)
+        << what;
+
+    Settings rolling = settings();
+    rolling.contact.rollingFriction = 0.025;
+    what = loadedUnder(rolling, settings(), "bedRolling.state");
+    EXPECT_NE(what.find("other settings: contact rollingFriction = 0.025 in the file, 0 here"),
+              std::string::npos)
+        << what;
+
+    Settings damping = settings();
+    damping.contact.tangentialDampingRatio = 0.5;
+    damping.contact.rollingFrictionWall = 0.01;
+    what = loadedUnder(damping, settings(), "bedDamping.state");
+    EXPECT_NE(what.find("contact tangentialDampingRatio = 0.5 in the file, 1 here; contact "
+                        "rollingFrictionWall = 0.01 in the file, 0 here"),
+              std::string::npos)
+        << what;
+
+    Settings stiffer = hertzSettings();
+    stiffer.classes[0].youngsModulus = 2e7;
+    stiffer.contact.wallPoissonRatio = 0.25;
+    what = loadedUnder(hertzSettings(), stiffer, "bedModulus.state");
+    EXPECT_NE(what.find("contact wallPoissonRatio = 0.3 in the file, 0.25 here; class 'small' "
+                        "youngsModulus = 1e+07 in the file, 2e+07 here"),
+              std::string::npos)
+        << what;
+
+    // The linear law does not read the moduli: a bed of the same linear settings loads
+    Settings unread = settings();
+    unread.classes[1].youngsModulus = 5e9;
+    EXPECT_EQ(loadedUnder(unread, settings(), "bedUnread.state"), "");
+}
+
 TEST(BedRecord, ConvertedVersionThreeBedIsCheckedOnItsCounts)
 {
-    // A version-3 file (before beds recorded their recipe), converted: the version-6 layout
+    // A version-3 file (before beds recorded their recipe), converted: the version-7 layout
     // without the run record (after the version), the checksum (before the end marker), the
-    // recipe flag and the step of the last list build (after the step count and the build
-    // count).
+    // key's contact entries of version 7, the recipe flag and the step of the last list
+    // build (after the step count and the build count).
     const std::string path = tempPath("bedVersion3.state");
     Simulation sim(settings());
     sim.packRandom(recipe().countPerClass, recipe().region, 42);
@@ -208,6 +281,12 @@ TEST(BedRecord, ConvertedVersionThreeBedIsCheckedOnItsCounts)
     std::memcpy(&bytes[16], &three, sizeof(three));
     std::uint64_t keyLength;
     std::memcpy(&keyLength, &bytes[20], sizeof(keyLength));
+    // The key without the contact law, tangential damping ratio, rolling friction, the walls'
+    // moduli and the 2 classes' moduli (version 7), which sit before its last entry
+    const std::size_t added = 6 + 2 * 2;
+    bytes.erase(28 + (keyLength - 1 - added) * sizeof(double), added * sizeof(double));
+    keyLength -= added;
+    std::memcpy(&bytes[20], &keyLength, sizeof(keyLength));
     const std::size_t flag = 28 + keyLength * sizeof(double);
     ASSERT_EQ(bytes[flag], 0);
     bytes.erase(flag + 1 + 2 * sizeof(std::int64_t), sizeof(std::int64_t));
