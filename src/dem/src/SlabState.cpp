@@ -9,7 +9,7 @@
 // the step of the last list build (the adaptive skin's state), and a checksum (64-bit
 // FNV-1a of every byte before it) ahead of the end marker.
 // Version policy: as the 2D engine's (StateFile.cpp): this version only is written and
-// read, an older one (1-3) is refused naming the command that converts it.
+// read, an older one (1-4) is refused naming the command that converts it.
 
 #include "StateIntegrity.hpp"
 #include "dem/StateConversion.hpp"

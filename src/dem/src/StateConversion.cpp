@@ -6,8 +6,10 @@
 //
 // 2D (discs): version 2 stored per-pair forces and a per-particle pair index, and its pairs
 // were not in groups; 3 added neither; 4 the bed recipe; 5 the step of the last list build;
-// 6 the run record and the checksum. Slab: version 1 had no bed recipe; 2 added it; 3 the
-// skin and the step of the last list build; 4 the run record and the checksum.
+// 6 the run record and the checksum; 7 the contact law, tangential damping ratio, rolling
+// friction and moduli in the settings key. Slab: version 1 had no bed recipe; 2 added it; 3
+// the skin and the step of the last list build; 4 the run record and the checksum; 5 the
+// key's contact entries as the 2D version 7.
 
 #include "dem/StateConversion.hpp"
 
@@ -23,6 +25,7 @@
 #include <cstdio>
 #include <cstring>
 #include <optional>
+#include <sstream>
 #include <vector>
 
 namespace dem {
@@ -115,6 +118,59 @@ void writeRecipe(Out& out, const std::optional<BedRecipe>& r)
     out.value(r->keTolerance);
 }
 
+/// The contact law a run record names on its "contactLaw <name>" line (the OpenFOAM side's
+/// runs record it), else the linear law.
+ContactLawType lawOfRunRecord(const std::vector<char>& record, bool& named)
+{
+    std::istringstream lines(std::string(record.begin(), record.end()));
+    named = false;
+    for (std::string line; std::getline(lines, line);) {
+        std::istringstream words(line);
+        std::string entry, name;
+        if (words >> entry >> name && entry == "contactLaw") {
+            named = true;
+            return contactLawFromName(name);
+        }
+    }
+    return ContactLawType::linear;
+}
+
+/// The settings key of the earlier versions (the class count, diameter and density per
+/// class, kn, kt, the restitutions and frictions, the box, gravity, dt, and the skin or the
+/// slab's depth last) with the entries of the current one (StateRecord.cpp's settingsKey)
+/// that those did not carry, set as they ran: the law of the run record (else linear), the
+/// tangential damping ratio 1, no rolling friction, the moduli unset (0).
+std::vector<double> currentKey(In& in, const std::vector<double>& key,
+                               const std::vector<char>& record, std::string& notes)
+{
+    const std::size_t classes = key.empty() ? 0 : static_cast<std::size_t>(key[0]);
+    if (classes == 0 || key.size() != 15 + 2 * classes) {
+        in.fail("a settings key of " + std::to_string(key.size()) + " values");
+    }
+    bool named = false;
+    ContactLawType law = ContactLawType::linear;
+    try {
+        law = lawOfRunRecord(record, named);
+    } catch (const Error& e) {
+        in.fail(std::string("its run record: ") + e.what());
+    }
+    const ContactSettings defaults;
+    std::vector<double> widened(key.begin(), key.end() - 1);
+    for (double v : {law == ContactLawType::hertzMindlin ? 1.0 : 0.0,
+                     defaults.tangentialDampingRatio, 0.0, 0.0, 0.0, 0.0}) {
+        widened.push_back(v);
+    }
+    for (std::size_t k = 0; k < 2 * classes; ++k) widened.push_back(0.0);
+    widened.push_back(key.back());
+    notes += "its settings key carries no contact law, tangential damping ratio, rolling "
+             "friction or moduli: written as contactLaw " + contactLawName(law)
+             + (named ? " (its run record's)" : " (the default)")
+             + ", tangentialDampingRatio " + formatValue(defaults.tangentialDampingRatio)
+             + ", rollingFriction and rollingFrictionWall 0, no Young's moduli or Poisson's "
+               "ratios; a run with other values refuses it naming them\n";
+    return widened;
+}
+
 // A pair list's arrays but its groups, and a wall list's, in the writers' order
 template <class List> void readPairs(In& in, List& l)
 {
@@ -133,11 +189,14 @@ template <class List> void writeWalls(Out& out, const List& l)
     out.array(l.start); out.array(l.wall); out.array(l.xi);
 }
 
-/// A 2D state of versions 2-5 in the current layout.
+/// A 2D state of versions 2-6 in the current layout.
 std::string convertDisc(In& in, std::uint32_t version, std::string& notes)
 {
+    std::vector<char> record;
+    if (version >= 6) in.array(record);
     std::vector<double> key;
     in.array(key);
+    key = currentKey(in, key, record, notes);
     const std::optional<BedRecipe> recipe = version >= 4 ? readRecipe(in) : std::nullopt;
     const auto stepCount = in.value<std::int64_t>();
     const auto listBuilds = in.value<std::int64_t>();
@@ -166,12 +225,13 @@ std::string convertDisc(In& in, std::uint32_t version, std::string& notes)
     }
     WallList walls;
     readWalls(in, walls);
+    if (version >= 6) in.value<std::uint64_t>();   // the checksum, verified before
     in.endMarker(discStateMagic);
 
     Out out;
     out.raw(discStateMagic, sizeof(discStateMagic));
     out.value(discStateVersion);
-    out.array(std::vector<char>());   // no run record
+    out.array(record);   // none before version 6
     out.array(key);
     writeRecipe(out, recipe);
     out.value(stepCount);
@@ -193,9 +253,11 @@ std::string convertDisc(In& in, std::uint32_t version, std::string& notes)
     return out.bytes();
 }
 
-/// A slab state of versions 1-3 in the current layout.
+/// A slab state of versions 1-4 in the current layout.
 std::string convertSlab(In& in, std::uint32_t version, std::string& notes)
 {
+    std::vector<char> record;
+    if (version >= 4) in.array(record);
     std::vector<double> key;
     in.array(key);
     const std::optional<BedRecipe> recipe = version >= 2 ? readRecipe(in) : std::nullopt;
@@ -230,12 +292,14 @@ std::string convertSlab(In& in, std::uint32_t version, std::string& notes)
     in.array(pairs.groupStart);
     SlabWallList walls;
     readWalls(in, walls);
+    if (version >= 4) in.value<std::uint64_t>();   // the checksum, verified before
     in.endMarker(slabStateMagic);
+    key = currentKey(in, key, record, notes);   // after the skin, which reads the old key
 
     Out out;
     out.raw(slabStateMagic, sizeof(slabStateMagic));
     out.value(slabStateVersion);
-    out.array(std::vector<char>());   // no run record
+    out.array(record);   // none before version 4
     out.array(key);
     writeRecipe(out, recipe);
     out.value(stepCount);
@@ -314,11 +378,18 @@ StateConversion convertState(const std::string& inPath, const std::string& outPa
                        "state file '" + inPath + "'");
         return c;
     }
+    const bool sealed = c.fromVersion >= (disc ? 6u : 4u);   // a checksum and a run record
+    if (sealed) {
+        verifyChecksum(bytes, disc ? discStateMagic : slabStateMagic,
+                       "state file '" + inPath + "'");
+    }
     const std::string converted =
         disc ? convertDisc(in, c.fromVersion, c.notes) : convertSlab(in, c.fromVersion, c.notes);
-    c.notes = "it carries no checksum: its integrity could not be checked (the particles are "
-              "checked when a run loads it)\n"
-              "it carries no record of the run's coupling models\n" + c.notes;
+    if (!sealed) {
+        c.notes = "it carries no checksum: its integrity could not be checked (the particles "
+                  "are checked when a run loads it)\n"
+                  "it carries no record of the run's coupling models\n" + c.notes;
+    }
     writeFile(converted, outPath);
     return c;
 }

@@ -8,10 +8,10 @@
 // the step of the last list build (the adaptive skin's clock; the skin itself is the key's
 // last entry); and a checksum (64-bit FNV-1a of every byte before it) ahead of the end marker.
 // Version policy: the version after the magic names the layout. Each engine writes and
-// reads its current version only (2D 6, slab 4; StateConversion.hpp): the loader holds one
+// reads its current version only (2D 7, slab 5; StateConversion.hpp): the loader holds one
 // layout, and every state it reads carries its checksum and the run's record. A change of
 // the layout raises the version and teaches dpmConvertState (StateConversion.cpp) to read
-// the previous one; the converter keeps reading every earlier version (2D 2-5, slab 1-3).
+// the previous one; the converter keeps reading every earlier version (2D 2-6, slab 1-4).
 // load() refuses a file of an older version naming its version and the command that
 // converts it, and any other version as not a valid state.
 

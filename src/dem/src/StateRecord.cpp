@@ -26,10 +26,39 @@ std::vector<std::string> settingsKeyNames(const Settings& s)
     for (const char* n : {"contact kn", "contact kt", "contact restitution",
                           "contact restitutionWall", "contact frictionParticle",
                           "contact frictionWall", "box xMin", "box xMax", "box yMin", "box yMax",
-                          "gravity x", "gravity y", "DEM step dt", "neighbour skin"}) {
+                          "gravity x", "gravity y", "DEM step dt", "contact law",
+                          "contact tangentialDampingRatio", "contact rollingFriction",
+                          "contact rollingFrictionWall", "contact wallYoungsModulus",
+                          "contact wallPoissonRatio"}) {
         names.emplace_back(n);
     }
+    for (const auto& c : s.classes) {
+        names.push_back("class '" + c.name + "' youngsModulus");
+        names.push_back("class '" + c.name + "' poissonRatio");
+    }
+    names.emplace_back("neighbour skin");
     return names;
+}
+
+/// The law as the key stores it (0 linear, 1 HertzMindlin) and its name.
+double lawCode(ContactLawType law) { return law == ContactLawType::hertzMindlin ? 1.0 : 0.0; }
+
+std::string lawName(double code)
+{
+    if (code == 0.0) return contactLawName(ContactLawType::linear);
+    if (code == 1.0) return contactLawName(ContactLawType::hertzMindlin);
+    return "unknown law " + formatValue(code);
+}
+
+/// The moduli's entries: the linear law does not read them.
+bool isModulus(const std::string& name)
+{
+    auto endsWith = [&](const std::string& tail) {
+        return name.size() >= tail.size()
+               && name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+    };
+    return endsWith("youngsModulus") || endsWith("YoungsModulus") || endsWith("poissonRatio")
+           || endsWith("PoissonRatio");
 }
 
 std::string className(const Settings& s, std::size_t k)
@@ -100,9 +129,16 @@ std::vector<double> settingsKey(const Settings& s, double skin)
     const ContactSettings& c = s.contact;
     for (double v : {c.kn, c.kt, c.restitution, c.restitutionWall, c.frictionParticle,
                      c.frictionWall, s.box.xMin, s.box.xMax, s.box.yMin, s.box.yMax,
-                     s.gravity[0], s.gravity[1], s.dt, skin}) {
+                     s.gravity[0], s.gravity[1], s.dt, lawCode(c.law), c.tangentialDampingRatio,
+                     c.rollingFriction, c.rollingFrictionWall, c.wallYoungsModulus,
+                     c.wallPoissonRatio}) {
         key.push_back(v);
     }
+    for (const auto& m : s.classes) {
+        key.push_back(m.youngsModulus);
+        key.push_back(m.poissonRatio);
+    }
+    key.push_back(skin);
     return key;
 }
 
@@ -120,10 +156,18 @@ std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
     const std::size_t box = static_cast<std::size_t>(    // box xMin, xMax, yMin, yMax
         std::find(names.begin(), names.end(), "box xMin") - names.begin());
     const double extent = extentOf({here[box], here[box + 1], here[box + 2], here[box + 3]});
+    const std::size_t law = static_cast<std::size_t>(
+        std::find(names.begin(), names.end(), "contact law") - names.begin());
+    const bool bothLinear = inFile[law] == 0.0 && here[law] == 0.0;
     std::vector<Difference> d;
     for (std::size_t k = 0; k + 1 < here.size(); ++k) {   // not the skin
         if (inFile[k] == here[k]) continue;
         if (k >= box && k < box + 4 && sameCoordinate(inFile[k], here[k], extent)) continue;
+        if (bothLinear && isModulus(names[k])) continue;
+        if (k == law) {
+            d.push_back({names[k], lawName(inFile[k]), lawName(here[k])});
+            continue;
+        }
         Difference e = differ(names[k], inFile[k], here[k]);
         if (names[k] == "contact kt") {   // kt < 0 stands for the default 2/7 kn
             if (inFile[k] < 0) e.inFile += " (2/7 kn)";

@@ -190,10 +190,10 @@ TEST(BedRecord, RestartMismatchNamesTheSetting)
 
 TEST(BedRecord, ConvertedVersionThreeBedIsCheckedOnItsCounts)
 {
-    // A version-3 file (before beds recorded their recipe), converted: the version-6 layout
+    // A version-3 file (before beds recorded their recipe), converted: the version-7 layout
     // without the run record (after the version), the checksum (before the end marker), the
-    // recipe flag and the step of the last list build (after the step count and the build
-    // count).
+    // key's contact entries of version 7, the recipe flag and the step of the last list
+    // build (after the step count and the build count).
     const std::string path = tempPath("bedVersion3.state");
     Simulation sim(settings());
     sim.packRandom(recipe().countPerClass, recipe().region, 42);
@@ -208,6 +208,12 @@ TEST(BedRecord, ConvertedVersionThreeBedIsCheckedOnItsCounts)
     std::memcpy(&bytes[16], &three, sizeof(three));
     std::uint64_t keyLength;
     std::memcpy(&keyLength, &bytes[20], sizeof(keyLength));
+    // The key without the contact law, tangential damping ratio, rolling friction, the walls'
+    // moduli and the 2 classes' moduli (version 7), which sit before its last entry
+    const std::size_t added = 6 + 2 * 2;
+    bytes.erase(28 + (keyLength - 1 - added) * sizeof(double), added * sizeof(double));
+    keyLength -= added;
+    std::memcpy(&bytes[20], &keyLength, sizeof(keyLength));
     const std::size_t flag = 28 + keyLength * sizeof(double);
     ASSERT_EQ(bytes[flag], 0);
     bytes.erase(flag + 1 + 2 * sizeof(std::int64_t), sizeof(std::int64_t));

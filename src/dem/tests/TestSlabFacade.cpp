@@ -195,6 +195,29 @@ TEST(SlabFacade, StateWithOtherSettingsNamesThem)
     EXPECT_NE(what.find("slabDepth = 0.0075 m in the file, 0.008 m here"), std::string::npos)
         << what;
 
+    // The contact law and rolling friction, as the disc engine's (TestBedRecord)
+    Settings hertz = sim->settings();
+    hertz.contact.law = ContactLawType::hertzMindlin;
+    for (ParticleClass& c : hertz.classes) {
+        c.youngsModulus = 1e7;
+        c.poissonRatio = 0.3;
+    }
+    hertz.contact.wallYoungsModulus = 1e7;
+    hertz.contact.wallPoissonRatio = 0.3;
+    hertz.contact.rollingFriction = 0.025;
+    Simulation otherLaw(hertz);
+    what.clear();
+    try {
+        otherLaw.load(path);
+    } catch (const Error& e) {
+        what = e.what();
+    }
+    EXPECT_NE(what.find("contact law = linear in the file, HertzMindlin here; contact "
+                        "rollingFriction = 0 in the file, 0.025 here; contact wallYoungsModulus "
+                        "= 0 in the file, 1e+07 here"),
+              std::string::npos)
+        << what;
+
     Settings nearly = sim->settings();
     nearly.box.xMax = std::nextafter(nearly.box.xMax, 1.0);
     Simulation loaded(nearly);

@@ -5,8 +5,11 @@
 // version. The older files are made here from a current one by the layout changes of each
 // version (StateConversion.cpp): the converted file must be the current writer's bytes for
 // the same particles, with what the older version did not carry as the converter documents
-// (no run record; 2D before 5 and slab before 3: the skin's clock at the file's step; 2D
-// before 4 and slab 1: no recipe; 2D 2: the list built anew; slab before 3: skin 0.1 d_min).
+// (2D before 7 and slab before 5: the settings key's contact law, tangential damping, rolling
+// friction and moduli as those versions ran, the law of the run record else linear; 2D
+// before 6 and slab before 4: no run record; 2D before 5 and slab before 3: the skin's clock
+// at the file's step; 2D before 4 and slab 1: no recipe; 2D 2: the list built anew; slab
+// before 3: skin 0.1 d_min).
 
 #include "StateIntegrity.hpp"
 #include "TestHelpers.hpp"
@@ -138,6 +141,26 @@ void resign(std::string& b)
     put(b, b.size() - 24, fnv1a64(b.data(), b.size() - 24));
 }
 
+/// The settings key at `at` of a current state in the earlier versions' layout: without the
+/// contact law, tangential damping ratio, rolling friction, the walls' moduli (6 values)
+/// and each class's moduli (2 per class) that sit before its last entry.
+std::string previousKey(const std::string& b, std::size_t at)
+{
+    const auto n = get<std::uint64_t>(b, at);
+    const auto classes = static_cast<std::uint64_t>(get<double>(b, at + 8));
+    const std::uint64_t added = 6 + 2 * classes;
+    std::string key = b.substr(at, 8 + 8 * n);
+    key.erase(8 + 8 * (n - 1 - added), 8 * added);
+    put(key, 0, n - added);
+    return key;
+}
+
+/// The key at `at` of `b` put in the earlier layout in `old`.
+void shortenKey(std::string& old, const std::string& b, std::size_t at)
+{
+    old.replace(at, 8 + 8 * get<std::uint64_t>(b, at), previousKey(b, at));
+}
+
 /// A current state `b` in the layout of `version`, and in `expected` the current layout of
 /// what the converter makes of it.
 std::string olderDisc(const std::string& b, std::uint32_t version, std::string& expected)
@@ -160,7 +183,7 @@ std::string olderDisc(const std::string& b, std::uint32_t version, std::string& 
         expected.replace(l.groupStart, l.groupStartEnd - l.groupStart, std::string(8, '\0'));
         expected[l.listValid] = 0;
     }
-    old.erase(old.size() - 24, 8);   // checksum
+    if (version <= 5) old.erase(old.size() - 24, 8);   // checksum
     if (version <= 4) {
         old.erase(l.lastBuild, 8);
         put(expected, l.lastBuild, get<std::int64_t>(b, l.step));
@@ -169,8 +192,13 @@ std::string olderDisc(const std::string& b, std::uint32_t version, std::string& 
         old.erase(l.recipe, l.recipeEnd - l.recipe);
         expected.replace(l.recipe, l.recipeEnd - l.recipe, std::string(1, '\0'));
     }
-    old.erase(l.record, 8 + get<std::uint64_t>(b, l.record));
+    shortenKey(old, b, l.key);
+    if (version <= 5) {
+        old.erase(l.record, 8 + get<std::uint64_t>(b, l.record));
+        expected.replace(l.record, 8 + get<std::uint64_t>(b, l.record), std::string(8, '\0'));
+    }
     put(old, 16, version);
+    if (version == 6) resign(old);
     resign(expected);
     return old;
 }
@@ -181,7 +209,7 @@ std::string olderSlab(const std::string& b, std::uint32_t version, std::string& 
     const Layout l(b, 3);
     std::string old = b;
     expected = b;
-    old.erase(old.size() - 24, 8);   // checksum
+    if (version <= 3) old.erase(old.size() - 24, 8);   // checksum
     if (version <= 2) {
         old.erase(l.skin, 16);
         put(expected, l.skin, 0.1 * dMin);
@@ -191,8 +219,13 @@ std::string olderSlab(const std::string& b, std::uint32_t version, std::string& 
         old.erase(l.recipe, l.recipeEnd - l.recipe);
         expected.replace(l.recipe, l.recipeEnd - l.recipe, std::string(1, '\0'));
     }
-    old.erase(l.record, 8 + get<std::uint64_t>(b, l.record));
+    shortenKey(old, b, l.key);
+    if (version <= 3) {
+        old.erase(l.record, 8 + get<std::uint64_t>(b, l.record));
+        expected.replace(l.record, 8 + get<std::uint64_t>(b, l.record), std::string(8, '\0'));
+    }
     put(old, 16, version);
+    if (version == 4) resign(old);
     resign(expected);
     return old;
 }
@@ -228,7 +261,7 @@ TEST(StateConversion, EveryOlderDiscVersionBecomesTheCurrentWritersBytes)
         Simulation refused(settingsOf(2));
         const std::string e = errorOf([&] { refused.load(old); });
         EXPECT_TRUE(has(e, "state file '" + old + "' is of version " + std::to_string(version)
-                           + ", older than this build reads (6): convert it with 'dpmConvertState "
+                           + ", older than this build reads (7): convert it with 'dpmConvertState "
                            + old + "'"))
             << e;
 
@@ -263,7 +296,7 @@ TEST(StateConversion, EveryOlderSlabVersionBecomesTheCurrentWritersBytes)
         Simulation refused(settingsOf(3));
         const std::string e = errorOf([&] { refused.load(old); });
         EXPECT_TRUE(has(e, "slab state file '" + old + "' is of version " + std::to_string(version)
-                           + ", older than this build reads (4): convert it with 'dpmConvertState "
+                           + ", older than this build reads (5): convert it with 'dpmConvertState "
                            + old + "'"))
             << e;
 
@@ -299,10 +332,10 @@ TEST(StateConversion, CurrentUnknownAndForeignFilesAreNamed)
     writeAll(current, unknown);
     EXPECT_TRUE(has(errorOf([&] { convertState(current, out); }),
                     "state file '" + current + "' is not a valid DEM state: 2D state version 9, "
-                    "expected 2 to 6"));
+                    "expected 2 to 7"));
     Simulation sim(settingsOf(2));
     EXPECT_TRUE(has(errorOf([&] { sim.load(current); }),
-                    "state file '" + current + "' is not a valid DEM state: version 9, expected 6"));
+                    "state file '" + current + "' is not a valid DEM state: version 9, expected 7"));
 
     writeAll(current, "a bed of particles, in words");
     EXPECT_TRUE(has(errorOf([&] { convertState(current, out); }), "wrong file type"));
@@ -331,7 +364,7 @@ TEST(StateConversion, TheCommandConvertsInPlaceAndKeepsTheOriginal)
     EXPECT_TRUE(readAll(path + ".version3") == old);
     const std::string said = readAll(log);
     EXPECT_TRUE(has(said, "Converted '" + path + "' (2D state version 3) to '" + path
-                          + "' (version 6)")
+                          + "' (version 7)")
                 && has(said, "Note: it carries no checksum: its integrity could not be checked"))
         << said;
 
@@ -343,4 +376,66 @@ TEST(StateConversion, TheCommandConvertsInPlaceAndKeepsTheOriginal)
     EXPECT_NE(std::system(missing.c_str()), 0);
     EXPECT_TRUE(has(readAll(log), "dpmConvertState: cannot open state file '" + path + ".none'"))
         << readAll(log);
+}
+
+// The previous versions (2D 6, slab 4) carried a run record but no contact law in the
+// settings key: the converted file continues with the same bits as the run it was saved
+// from, and a run record naming HertzMindlin gives the key that law.
+TEST(StateConversion, PreviousVersionContinuesWithTheSameBits)
+{
+    for (int dimension : {2, 3}) {
+        SCOPED_TRACE("dimension " + std::to_string(dimension));
+        const std::uint32_t previous = dimension == 2 ? discStateVersion - 1 : slabStateVersion - 1;
+        const std::string path = fileName("continued" + std::to_string(dimension));
+        Simulation run(settingsOf(dimension));
+        BedRecipe r;
+        r.countPerClass = {120, 40};
+        r.region = {0.0, 0.03, 0.0, 0.04};
+        r.seed = 42;
+        r.settleTime = 0.002;
+        run.packBed(r);
+        run.advance(0.0005);
+        run.setRunRecord("dragModel Beetstra\n");
+        run.save(path);
+        const std::string b = readAll(path);
+        std::string expected;
+        const std::string old = path + ".previous";
+        writeAll(old, dimension == 2 ? olderDisc(b, previous, expected)
+                                     : olderSlab(b, previous, expected, dSmall));
+        const StateConversion c = convertState(old, old + ".converted");
+        EXPECT_TRUE(readAll(old + ".converted") == b);
+        EXPECT_TRUE(has(c.notes, "written as contactLaw linear (the default), "
+                                 "tangentialDampingRatio 1, rollingFriction and "
+                                 "rollingFrictionWall 0"))
+            << c.notes;
+        EXPECT_FALSE(has(c.notes, "no checksum")) << c.notes;
+
+        Simulation continued(settingsOf(dimension));
+        continued.load(old + ".converted");
+        EXPECT_EQ(continued.runRecord(), "dragModel Beetstra\n");
+        run.advance(0.0005);
+        continued.advance(0.0005);
+        const std::size_t n = run.size() * sizeof(double);
+        ASSERT_EQ(continued.size(), run.size());
+        EXPECT_EQ(std::memcmp(continued.x(), run.x(), n), 0);
+        EXPECT_EQ(std::memcmp(continued.y(), run.y(), n), 0);
+        EXPECT_EQ(std::memcmp(continued.vx(), run.vx(), n), 0);
+        EXPECT_EQ(std::memcmp(continued.vy(), run.vy(), n), 0);
+        EXPECT_EQ(std::memcmp(continued.omegaZ(), run.omegaZ(), n), 0);
+
+        // A run record of HertzMindlin: the law kept, a linear run refuses the file
+        run.setRunRecord("dragModel Beetstra\ncontactLaw HertzMindlin\n");
+        run.save(path);
+        const std::string hertz = readAll(path);
+        writeAll(old, dimension == 2 ? olderDisc(hertz, previous, expected)
+                                     : olderSlab(hertz, previous, expected, dSmall));
+        const StateConversion h = convertState(old, old + ".converted");
+        EXPECT_TRUE(has(h.notes, "written as contactLaw HertzMindlin (its run record's)"))
+            << h.notes;
+        Simulation linear(settingsOf(dimension));
+        const std::string e = errorOf([&] { linear.load(old + ".converted"); });
+        EXPECT_TRUE(has(e, "was written with other settings: contact law = HertzMindlin in the "
+                           "file, linear here"))
+            << e;
+    }
 }

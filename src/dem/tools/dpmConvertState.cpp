@@ -23,7 +23,11 @@ int usage()
               << dem::oldestSlabStateVersion << "-" << dem::slabStateVersion - 1
               << ") in the current version (2D " << dem::discStateVersion << ", slab "
               << dem::slabStateVersion << ").\n"
-              << "  Without <out>: in place, the original kept as <in>.version<N>.\n";
+              << "  Without <out>: in place, the original kept as <in>.version<N>.\n"
+              << "  Settings the older file did not record are written as it ran: the\n"
+              << "  contact law of its run record (else linear), tangentialDampingRatio 1,\n"
+              << "  no rolling friction, no Young's moduli or Poisson's ratios; a run with\n"
+              << "  other values refuses the converted file naming them.\n";
     return 1;
 }
 

@@ -20,13 +20,16 @@ struct Difference {
 };
 
 /// The settings a trajectory depends on, flattened as the state file stores them: number of
-/// classes, diameter and density of each, contact, box, gravity, dt, and the neighbour skin
-/// last (nThreads does not count).
+/// classes, diameter and density of each, contact, box, gravity, dt, the contact law (0
+/// linear, 1 HertzMindlin), tangential damping ratio, rolling friction, the walls' and each
+/// class's Young's modulus and Poisson's ratio, and the neighbour skin last (nThreads and
+/// impactSpeed, which sets the printed step bounds only, do not count).
 std::vector<double> settingsKey(const Settings& s, double skin);
 
 /// The entries of two settings keys that differ, named after `s` (the reader's settings),
-/// the skin left out (a state continues with another skin). Keys of another number of
-/// classes give that one difference.
+/// the skin left out (a state continues with another skin), the moduli too when both laws
+/// are linear (it does not read them). Keys of another number of classes give that one
+/// difference.
 std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
                                             const std::vector<double>& here, const Settings& s);
 

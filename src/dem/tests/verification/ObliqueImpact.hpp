@@ -15,16 +15,30 @@ struct Material {
     double d, rho;       // m, kg/m^3
     double kn, kt;       // N/m (kt < 0: the library's 2/7 kn); the linear law's
     double e, mu;
-    double youngs = 0.0;    // Pa; > 0: the HertzMindlin law, on a rigid wall
+    double youngs = 0.0;    // Pa; > 0: the HertzMindlin law
     double poisson = 0.0;
+    double wallYoungs = 0.0;    // Pa; 0: a rigid wall
+    double wallPoisson = 0.0;
 };
 
-/// The contact law of `mat` in `s`: HertzMindlin on a rigid wall if it has a Young's
-/// modulus, else the linear law with its kn and kt.
+/// Hertz's effective modulus of mat on its wall, 1/E* = (1 - nu^2)/E + (1 - nu_w^2)/E_w, Pa.
+inline double wallEffectiveModulus(const Material& mat)
+{
+    if (!(mat.wallYoungs > 0.0)) return mat.youngs / (1.0 - mat.poisson * mat.poisson);
+    return 1.0 / ((1.0 - mat.poisson * mat.poisson) / mat.youngs
+                  + (1.0 - mat.wallPoisson * mat.wallPoisson) / mat.wallYoungs);
+}
+
+/// The contact law of `mat` in `s`: HertzMindlin on its wall (rigid unless it has a wall
+/// modulus) if it has a Young's modulus, else the linear law with its kn and kt.
 inline void setLaw(Settings& s, const Material& mat)
 {
     if (mat.youngs > 0.0) {
         setHertzMindlin(s, mat.youngs, mat.poisson);
+        if (mat.wallYoungs > 0.0) {
+            s.contact.wallYoungsModulus = mat.wallYoungs;
+            s.contact.wallPoissonRatio = mat.wallPoisson;
+        }
     } else {
         s.contact.kn = mat.kn;
         s.contact.kt = mat.kt;
@@ -37,7 +51,7 @@ inline double wallContactTime(const Material& mat, double vn)
 {
     const double m = sphereMass(mat.d, mat.rho);
     if (mat.youngs > 0.0) {
-        return hertzImpactDuration(m, 0.5 * mat.d, mat.youngs / (1.0 - mat.poisson * mat.poisson), vn);
+        return hertzImpactDuration(m, 0.5 * mat.d, wallEffectiveModulus(mat), vn);
     }
     return contactTime(m, mat.kn, mat.e);
 }
