@@ -1,12 +1,14 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The slab's pair kernel over a batch of touching pairs (StreamingLoops.hpp): contactForce<3,
-// Law> without rolling resistance, written per component in its operations and their order,
-// on packs of two contacts (the baseline's SSE2) or four (AVX2), picked as the streaming loops.
+// The slab's contact kernel over a batch of touching pairs or wall contacts
+// (StreamingLoops.hpp): contactForce<3, Law> without rolling resistance, written per
+// component in its operations and their order, on packs of two contacts (the baseline's
+// SSE2) or four (AVX2), picked as the streaming loops.
 
 #include "StreamingLoops.hpp"
 
 #include <immintrin.h>
+#include <initializer_list>
 
 // The four-double packs pass only between functions inlined into the AVX2 one: no call
 // crosses the ABI GCC warns of
@@ -17,6 +19,7 @@ namespace dem {
 namespace {
 
 enum class PairLaw { linear, hertz };
+enum class Partner { sphere, wall };   // a wall's nHat and overlap come given
 
 // Packs of doubles, one contact a lane: two (SSE2) or four (AVX2); the IEEE operations of a
 // lane are the scalar ones (no fused multiply-add in either).
@@ -42,24 +45,37 @@ template <class Pack> [[gnu::always_inline]] inline Pack& at(double* p)
 
 // Both sides of the kernel's two branches are computed and selected; the side not taken
 // gets operands that raise no floating-point exception (the solver traps them).
-template <PairLaw law, class Pack>
+template <PairLaw law, Partner partner, class Pack>
 [[gnu::always_inline]] inline void pairBody(SlabPairBatch& b, int count, double dt)
 {
     constexpr int width = sizeof(Pack) / sizeof(double);
-    // Lanes past count repeat the last pair: valid operands, results unread
+    // Lanes past count repeat the last contact: valid operands, results unread
     for (int q = count; q % width != 0; ++q) {
-        for (double* in : {b.dx, b.dy, b.dz, b.rSum, b.dvx, b.dvy, b.dvz, b.sx, b.sy, b.sz,
-                           b.xix, b.xiy, b.xiz, b.normal, b.normalDamping, b.tangential,
-                           b.tangentialDamping, b.mu}) {
-            in[q] = in[count - 1];
-        }
+        auto repeat = [&](std::initializer_list<double*> inputs) {
+            for (double* in : inputs) in[q] = in[count - 1];
+        };
+        if constexpr (partner == Partner::sphere) repeat({b.dx, b.dy, b.dz, b.rSum});
+        else repeat({b.nx, b.ny, b.nz, b.overlap});
+        repeat({b.dvx, b.dvy, b.dvz, b.sx, b.sy, b.sz, b.xix, b.xiy, b.xiz, b.normal,
+                b.normalDamping, b.tangential, b.tangentialDamping, b.mu});
     }
     const Pack zero = {}, one = zero + 1.0;
     for (int q = 0; q < count; q += width) {
-        const Pack dx = load<Pack>(b.dx + q), dy = load<Pack>(b.dy + q), dz = load<Pack>(b.dz + q);
-        const Pack dist = squareRoot(dx * dx + dy * dy + dz * dz);
-        const Pack overlap = load<Pack>(b.rSum + q) - dist;
-        const Pack nx = dx / dist, ny = dy / dist, nz = dz / dist;
+        Pack overlap, nx, ny, nz;
+        if constexpr (partner == Partner::sphere) {
+            const Pack dx = load<Pack>(b.dx + q), dy = load<Pack>(b.dy + q),
+                       dz = load<Pack>(b.dz + q);
+            const Pack dist = squareRoot(dx * dx + dy * dy + dz * dz);
+            overlap = load<Pack>(b.rSum + q) - dist;
+            nx = dx / dist;
+            ny = dy / dist;
+            nz = dz / dist;
+        } else {
+            overlap = load<Pack>(b.overlap + q);
+            nx = load<Pack>(b.nx + q);
+            ny = load<Pack>(b.ny + q);
+            nz = load<Pack>(b.nz + q);
+        }
         // v_i - v_j + (r_i w_i + r_j w_j) x nHat
         const Pack sx = load<Pack>(b.sx + q), sy = load<Pack>(b.sy + q), sz = load<Pack>(b.sz + q);
         const Pack vx = load<Pack>(b.dvx + q) + (sy * nz - sz * ny);
@@ -121,34 +137,36 @@ template <PairLaw law, class Pack>
     }
 }
 
-template <PairLaw law> void baselinePairs(SlabPairBatch& b, int count, double dt)
+template <PairLaw law, Partner partner> void baselinePairs(SlabPairBatch& b, int count, double dt)
 {
-    pairBody<law, Pack2>(b, count, dt);
+    pairBody<law, partner, Pack2>(b, count, dt);
 }
 
 #ifdef DEM_HAVE_AVX2_LOOPS
-template <PairLaw law>
+template <PairLaw law, Partner partner>
 __attribute__((target("avx2"))) void avx2Pairs(SlabPairBatch& b, int count, double dt)
 {
-    pairBody<law, Pack4>(b, count, dt);
+    pairBody<law, partner, Pack4>(b, count, dt);
 }
 #endif
 
-template <PairLaw law>
+template <PairLaw law, Partner partner>
 SlabPairLoop pairs(SimdLevel level)
 {
 #ifdef DEM_HAVE_AVX2_LOOPS
-    if (level == SimdLevel::avx2) return avx2Pairs<law>;
+    if (level == SimdLevel::avx2) return avx2Pairs<law, partner>;
 #endif
-    return baselinePairs<law>;
+    return baselinePairs<law, partner>;
 }
 
 } // namespace
 
 namespace slabLoops {
 
-SlabPairLoop linearPairs(SimdLevel level) { return pairs<PairLaw::linear>(level); }
-SlabPairLoop hertzPairs(SimdLevel level) { return pairs<PairLaw::hertz>(level); }
+SlabPairLoop linearPairs(SimdLevel level) { return pairs<PairLaw::linear, Partner::sphere>(level); }
+SlabPairLoop hertzPairs(SimdLevel level) { return pairs<PairLaw::hertz, Partner::sphere>(level); }
+SlabPairLoop linearWalls(SimdLevel level) { return pairs<PairLaw::linear, Partner::wall>(level); }
+SlabPairLoop hertzWalls(SimdLevel level) { return pairs<PairLaw::hertz, Partner::wall>(level); }
 
 } // namespace slabLoops
 

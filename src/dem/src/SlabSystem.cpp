@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 
 namespace dem {
 
@@ -133,6 +134,56 @@ void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
     });
 }
 
+template <class Law>
+void SlabSystem::batchedWallForces(const WallPick* picked, int m, double historyDt,
+                                   std::size_t& touching, double& maxOverlap)
+{
+    constexpr bool hertz = std::is_same_v<Law, HertzMindlin>;
+    const SlabPairLoop kernel =
+        hertz ? streamingLoops().slabHertzWalls : streamingLoops().slabLinearWalls;
+    SlabParticles& p = p_;
+    Vec3* wXi = wallContacts_.xi.data();
+    SlabPairBatch b;
+    for (int first = 0; first < m; first += SlabPairBatch::capacity) {
+        const int count = std::min(m - first, SlabPairBatch::capacity);
+        for (int q = 0; q < count; ++q) {
+            const auto [s, i] = picked[first + q];
+            const double ri = p.radius[i];
+            const PlaneWall3& wall = walls_[wallContacts_.wall[s]];
+            // As contactForce's caller: nHat = -wall.nHat, v_i + (r_i w_i) x nHat
+            b.overlap[q] = ri - wall.distance(p.position(i));
+            b.nx[q] = -wall.nHat.x();
+            b.ny[q] = -wall.nHat.y();
+            b.nz[q] = -wall.nHat.z();
+            b.dvx[q] = p.vx[i];
+            b.dvy[q] = p.vy[i];
+            b.dvz[q] = p.vz[i];
+            b.sx[q] = ri * p.wx[i];
+            b.sy[q] = ri * p.wy[i];
+            b.sz[q] = ri * p.wz[i];
+            b.xix[q] = wXi[s].x();
+            b.xiy[q] = wXi[s].y();
+            b.xiz[q] = wXi[s].z();
+            const ContactLaw& c = wallLaws_[p.classIndex[i]];
+            b.normal[q] = hertz ? c.hertzKn : c.kn;
+            b.normalDamping[q] = hertz ? c.hertzEtaN : c.etaN;
+            b.tangential[q] = hertz ? c.mindlinKt : c.kt;
+            b.tangentialDamping[q] = hertz ? c.mindlinEtaT : c.etaT;
+            b.mu[q] = c.mu;
+        }
+        kernel(b, count, historyDt);
+        for (int q = 0; q < count; ++q) {
+            const auto [s, i] = picked[first + q];
+            const double ri = p.radius[i];
+            p.fx[i] += b.fx[q]; p.fy[i] += b.fy[q]; p.fz[i] += b.fz[q];
+            p.tx[i] += ri * b.nxFx[q]; p.ty[i] += ri * b.nxFy[q]; p.tz[i] += ri * b.nxFz[q];
+            wXi[s] = Vec3(b.xix[q], b.xiy[q], b.xiz[q]);
+            maxOverlap = std::max(maxOverlap, b.overlap[q]);
+        }
+        touching += static_cast<std::size_t>(count);
+    }
+}
+
 template <class Law, bool Rolling>
 void SlabSystem::addWallForcesAndKickWith(double historyDt, bool kick, bool fluid)
 {
@@ -193,24 +244,28 @@ void SlabSystem::addWallForcesAndKickWith(double historyDt, bool kick, bool flui
                 wXi[s] = selectWithoutBranch(touch, wXi[s], Vec3::Zero());
             }
         }
-        for (int q = 0; q < m; ++q) {
-            const auto [s, i] = picked[q];
-            const double ri = p.radius[i];
-            const PlaneWall3& wall = walls[wWall[s]];
-            PairGeometry3 c;
-            c.overlap = ri - wall.distance(p.position(i));
-            c.nHat = -wall.nHat;
-            c.vRel = p.velocity(i) + (ri * p.spin(i)).cross(c.nHat);
-            c.rI = ri;
-            c.rJ = 0.0;
-            c.xiT = wXi[s];
-            if constexpr (Rolling) c.omegaRel = p.spin(i);
-            const PairForce3 f = contactForce<3, Law, Rolling>(c, wallLaws[p.classIndex[i]], historyDt);
-            p.fx[i] += f.force.x(); p.fy[i] += f.force.y(); p.fz[i] += f.force.z();
-            p.tx[i] += f.torqueI.x(); p.ty[i] += f.torqueI.y(); p.tz[i] += f.torqueI.z();
-            wXi[s] = f.xiT;
-            ++touching;
-            maxOverlap = std::max(maxOverlap, c.overlap);
+        if constexpr (Rolling) {
+            for (int q = 0; q < m; ++q) {
+                const auto [s, i] = picked[q];
+                const double ri = p.radius[i];
+                const PlaneWall3& wall = walls[wWall[s]];
+                PairGeometry3 c;
+                c.overlap = ri - wall.distance(p.position(i));
+                c.nHat = -wall.nHat;
+                c.vRel = p.velocity(i) + (ri * p.spin(i)).cross(c.nHat);
+                c.rI = ri;
+                c.rJ = 0.0;
+                c.xiT = wXi[s];
+                c.omegaRel = p.spin(i);
+                const PairForce3 f = contactForce<3, Law, true>(c, wallLaws[p.classIndex[i]], historyDt);
+                p.fx[i] += f.force.x(); p.fy[i] += f.force.y(); p.fz[i] += f.force.z();
+                p.tx[i] += f.torqueI.x(); p.ty[i] += f.torqueI.y(); p.tz[i] += f.torqueI.z();
+                wXi[s] = f.xiT;
+                ++touching;
+                maxOverlap = std::max(maxOverlap, c.overlap);
+            }
+        } else {
+            batchedWallForces<Law>(picked, m, historyDt, touching, maxOverlap);
         }
         kickLoop(kickArrays, first, last, h, gx, gy, weight, mode);
     }

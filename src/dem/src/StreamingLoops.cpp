@@ -109,7 +109,9 @@ const StreamingLoops& baselineLoops()
                                       slabLoops::drift(SimdLevel::baseline),
                                       slabLoops::kick(SimdLevel::baseline),
                                       slabLoops::linearPairs(SimdLevel::baseline),
-                                      slabLoops::hertzPairs(SimdLevel::baseline)};
+                                      slabLoops::hertzPairs(SimdLevel::baseline),
+                                      slabLoops::linearWalls(SimdLevel::baseline),
+                                      slabLoops::hertzWalls(SimdLevel::baseline)};
     return loops;
 }
 
@@ -147,7 +149,9 @@ const StreamingLoops& streamingLoops(SimdLevel level)
                                           slabLoops::drift(SimdLevel::avx2),
                                           slabLoops::kick(SimdLevel::avx2),
                                           slabLoops::linearPairs(SimdLevel::avx2),
-                                          slabLoops::hertzPairs(SimdLevel::avx2)};
+                                          slabLoops::hertzPairs(SimdLevel::avx2),
+                                          slabLoops::linearWalls(SimdLevel::avx2),
+                                          slabLoops::hertzWalls(SimdLevel::avx2)};
     if (cpuHasAvx2()) return avx2Loops;
 #endif
     throw Error("environment variable DEM_SIMD = avx2: this CPU (or build) has no AVX2; unset "

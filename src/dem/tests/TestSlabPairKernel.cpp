@@ -1,9 +1,9 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The slab's batched pair kernel (baseline and AVX2) gives contactForce<3, Law>'s bits for
-// every contact of a batch, under both laws, sticking and sliding, histories turned or
-// fresh; and it raises none of the floating-point exceptions the solver traps, though it
-// computes both sides of its branches.
+// The slab's batched contact kernel (baseline and AVX2) gives contactForce<3, Law>'s bits for
+// every contact of a batch, pairs and walls, under both laws, sticking and sliding, histories
+// turned or fresh; and it raises none of the floating-point exceptions the solver traps,
+// though it computes both sides of its branches.
 
 #include "StreamingLoops.hpp"
 #include "dem/ContactKernel.hpp"
@@ -26,24 +26,27 @@ constexpr int count = 61;   // not a multiple of the packs: the last pack is par
 
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-/// A batch of touching pairs of plausible magnitudes (spheres of 1.5-2.5 mm, overlaps up to
-/// 1 % of d, 0.3 m/s, 100 rad/s), one law for all; every fourth history is zero (a fresh
-/// contact), others in or out of the tangent plane, some large enough to slide.
+/// A batch of touching pairs (or wall contacts) of plausible magnitudes (spheres of 1.5-2.5
+/// mm, overlaps up to 1 % of d, 0.3 m/s, 100 rad/s), one law for all; every fourth history
+/// is zero (a fresh contact), others in or out of the tangent plane, some large enough to
+/// slide.
 struct Contacts {
     std::vector<PairGeometry3> geometry;
     SlabPairBatch batch;
 
-    Contacts(const ContactLaw& law, bool hertz, std::uint64_t seed)
+    Contacts(const ContactLaw& law, bool hertz, bool wall, std::uint64_t seed)
     {
         Random rng(seed);
         for (int q = 0; q < count; ++q) {
             const double rI = rng.uniform(0.75e-3, 1.25e-3);
-            const double rJ = rng.uniform(0.75e-3, 1.25e-3);
+            const double rJ = wall ? 0.0 : rng.uniform(0.75e-3, 1.25e-3);
             const Vec3 dir = Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)).normalized();
             const Vec3 d = (rI + rJ - rng.uniform(0.0, 2e-5)) * dir;
             const Vec3 dv(rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3));
             const Vec3 wI(rng.uniform(-100, 100), rng.uniform(-100, 100), rng.uniform(-100, 100));
-            const Vec3 wJ(rng.uniform(-100, 100), rng.uniform(-100, 100), rng.uniform(-100, 100));
+            const Vec3 wJ = wall ? Vec3::Zero()
+                                 : Vec3(rng.uniform(-100, 100), rng.uniform(-100, 100),
+                                        rng.uniform(-100, 100));
             const double size = q % 3 == 0 ? 1e-4 : 1e-6;   // 1e-4 m: slides
             const Vec3 xi = q % 4 == 0 ? Vec3::Zero()
                                        : Vec3(rng.uniform(-size, size), rng.uniform(-size, size),
@@ -51,21 +54,24 @@ struct Contacts {
             // As the pair loop builds them
             const double dist = std::sqrt(d.x() * d.x() + d.y() * d.y() + d.z() * d.z());
             PairGeometry3 g;
-            g.overlap = rI + rJ - dist;
-            g.nHat = d / dist;
+            g.overlap = wall ? rI + rJ - d.norm() : rI + rJ - dist;
+            g.nHat = wall ? dir : Vec3(d / dist);
             g.rI = rI;
             g.rJ = rJ;
-            g.vRel = dv + (rI * wI + rJ * wJ).cross(g.nHat);
+            g.vRel = wall ? Vec3(dv + (rI * wI).cross(g.nHat))
+                          : Vec3(dv + (rI * wI + rJ * wJ).cross(g.nHat));
             g.xiT = xi;
             g.omegaRel = Vec3::Zero();   // not read without rolling resistance
             geometry.push_back(g);
             SlabPairBatch& b = batch;
             b.dx[q] = d.x(); b.dy[q] = d.y(); b.dz[q] = d.z();
             b.rSum[q] = rI + rJ;
+            b.nx[q] = g.nHat.x(); b.ny[q] = g.nHat.y(); b.nz[q] = g.nHat.z();
+            b.overlap[q] = g.overlap;
             b.dvx[q] = dv.x(); b.dvy[q] = dv.y(); b.dvz[q] = dv.z();
-            b.sx[q] = rI * wI.x() + rJ * wJ.x();
-            b.sy[q] = rI * wI.y() + rJ * wJ.y();
-            b.sz[q] = rI * wI.z() + rJ * wJ.z();
+            b.sx[q] = wall ? rI * wI.x() : rI * wI.x() + rJ * wJ.x();
+            b.sy[q] = wall ? rI * wI.y() : rI * wI.y() + rJ * wJ.y();
+            b.sz[q] = wall ? rI * wI.z() : rI * wI.z() + rJ * wJ.z();
             b.xix[q] = xi.x(); b.xiy[q] = xi.y(); b.xiz[q] = xi.z();
             b.normal[q] = hertz ? law.hertzKn : law.kn;
             b.normalDamping[q] = hertz ? law.hertzEtaN : law.etaN;
@@ -80,11 +86,12 @@ ContactLaw linearLaw() { return makeContactLaw(2e-6, 800.0, 800.0 * 2.0 / 7.0, 0
 ContactLaw hertzLaw() { return makeHertzMindlinLaw(2e-6, 5e-4, 5e6, 2e6, 0.9, 0.3); }
 
 template <class Law>
-void expectContactForceBits(SlabPairLoop kernel, const ContactLaw& law, const char* what)
+void expectContactForceBits(SlabPairLoop kernel, const ContactLaw& law, bool wall,
+                            const std::string& what)
 {
     constexpr bool hertz = std::is_same_v<Law, HertzMindlin>;
     constexpr double dt = 1e-5;
-    Contacts c(law, hertz, 7);
+    Contacts c(law, hertz, wall, 7);
     kernel(c.batch, count, dt);
     int sliding = 0;
     for (int q = 0; q < count; ++q) {
@@ -118,25 +125,31 @@ std::vector<SimdLevel> levels()
 TEST(SlabPairKernel, GivesContactForceBits)
 {
     for (SimdLevel level : levels()) {
-        const StreamingLoops& loops = streamingLoops(level);
-        const char* name = level == SimdLevel::avx2 ? "avx2" : "baseline";
-        expectContactForceBits<LinearSpringDashpot>(loops.slabLinearPairs, linearLaw(),
-                                                    (std::string(name) + " linear").c_str());
-        expectContactForceBits<HertzMindlin>(loops.slabHertzPairs, hertzLaw(),
-                                             (std::string(name) + " Hertz-Mindlin").c_str());
+        const StreamingLoops& l = streamingLoops(level);
+        const std::string name = level == SimdLevel::avx2 ? "avx2" : "baseline";
+        expectContactForceBits<LinearSpringDashpot>(l.slabLinearPairs, linearLaw(), false,
+                                                    name + " linear pairs");
+        expectContactForceBits<HertzMindlin>(l.slabHertzPairs, hertzLaw(), false,
+                                             name + " Hertz-Mindlin pairs");
+        expectContactForceBits<LinearSpringDashpot>(l.slabLinearWalls, linearLaw(), true,
+                                                    name + " linear walls");
+        expectContactForceBits<HertzMindlin>(l.slabHertzWalls, hertzLaw(), true,
+                                             name + " Hertz-Mindlin walls");
     }
 }
 
 TEST(SlabPairKernel, RaisesNoTrappedFloatingPointException)
 {
     for (SimdLevel level : levels()) {
-        const StreamingLoops& loops = streamingLoops(level);
-        Contacts linear(linearLaw(), false, 11);
-        Contacts hertz(hertzLaw(), true, 11);
+        const StreamingLoops& l = streamingLoops(level);
+        Contacts linear(linearLaw(), false, false, 11), hertz(hertzLaw(), true, false, 11);
+        Contacts linearWall(linearLaw(), false, true, 11), hertzWall(hertzLaw(), true, true, 11);
         std::feclearexcept(FE_ALL_EXCEPT);
-        loops.slabLinearPairs(linear.batch, count, 1e-5);
-        loops.slabHertzPairs(hertz.batch, count, 1e-5);
-        loops.slabLinearPairs(linear.batch, count, 0.0);   // an evaluation without history
+        l.slabLinearPairs(linear.batch, count, 1e-5);
+        l.slabHertzPairs(hertz.batch, count, 1e-5);
+        l.slabLinearWalls(linearWall.batch, count, 1e-5);
+        l.slabHertzWalls(hertzWall.batch, count, 1e-5);
+        l.slabLinearPairs(linear.batch, count, 0.0);   // an evaluation without history
         EXPECT_EQ(std::fetestexcept(FE_DIVBYZERO | FE_INVALID | FE_OVERFLOW), 0)
             << (level == SimdLevel::avx2 ? "avx2" : "baseline");
     }
