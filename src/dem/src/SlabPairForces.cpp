@@ -48,6 +48,8 @@ template <class Law, bool Rolling>
 void SlabSystem::sumPairForces(double historyDt)
 {
     constexpr bool hertz = std::is_same_v<Law, HertzMindlin>;
+    static_assert(hertz || std::is_same_v<Law, LinearSpringDashpot>,
+                  "a law needs its version of the batched kernel (SlabPairKernel.cpp)");
     SlabParticles& p = p_;
     const std::size_t n = p.size();
     const int* pi = pairs_.i.data();

@@ -139,6 +139,8 @@ void SlabSystem::batchedWallForces(const WallPick* picked, int m, double history
                                    std::size_t& touching, double& maxOverlap)
 {
     constexpr bool hertz = std::is_same_v<Law, HertzMindlin>;
+    static_assert(hertz || std::is_same_v<Law, LinearSpringDashpot>,
+                  "a law needs its version of the batched kernel (SlabPairKernel.cpp)");
     const SlabPairLoop kernel =
         hertz ? streamingLoops().slabHertzWalls : streamingLoops().slabLinearWalls;
     SlabParticles& p = p_;
