@@ -3,12 +3,15 @@
 // The slab's contact kernel over a batch of touching pairs or wall contacts
 // (StreamingLoops.hpp): contactForce<3, Law> without rolling resistance, written per
 // component in its operations and their order, on packs of two contacts (the baseline's
-// SSE2) or four (AVX2), picked as the streaming loops.
+// SSE2) or four (AVX2), picked as the streaming loops (one at a time without SSE2).
 
 #include "StreamingLoops.hpp"
 
-#include <immintrin.h>
+#include <cmath>
 #include <initializer_list>
+#if defined(__SSE2__) || defined(DEM_HAVE_AVX2_LOOPS)
+#include <immintrin.h>
+#endif
 
 // The four-double packs pass only between functions inlined into the AVX2 one: no call
 // crosses the ABI GCC warns of
@@ -21,17 +24,23 @@ namespace {
 enum class PairLaw { linear, hertz };
 enum class Partner { sphere, wall };   // a wall's nHat and overlap come given
 
-// Packs of doubles, one contact a lane: two (SSE2) or four (AVX2); the IEEE operations of a
-// lane are the scalar ones (no fused multiply-add in either).
-typedef double Pack2 __attribute__((vector_size(16), may_alias));
+// Packs of doubles, one contact a lane: two (SSE2) or four (AVX2), a plain double on other
+// CPUs; the IEEE operations of a lane are the scalar ones (no fused multiply-add in any).
+#if defined(__SSE2__)
+typedef double BaselinePack __attribute__((vector_size(16), may_alias));
+[[gnu::always_inline]] inline BaselinePack squareRoot(BaselinePack x) { return _mm_sqrt_pd(x); }
+#else
+using BaselinePack = double;
+[[gnu::always_inline]] inline double squareRoot(double x) { return std::sqrt(x); }
+#endif
+#ifdef DEM_HAVE_AVX2_LOOPS
 typedef double Pack4 __attribute__((vector_size(32), may_alias));
-
-[[gnu::always_inline]] inline Pack2 squareRoot(Pack2 x) { return _mm_sqrt_pd(x); }
 // Not always_inline: inlined where pairBody is, into the AVX2 function
 [[gnu::target("avx2")]] inline Pack4 squareRoot(Pack4 x)
 {
     return _mm256_sqrt_pd(x);
 }
+#endif
 
 // The pack at p (aligned: the batch's arrays and q a multiple of the width), by reference
 template <class Pack> [[gnu::always_inline]] inline const Pack& load(const double* p)
@@ -139,7 +148,7 @@ template <PairLaw law, Partner partner, class Pack>
 
 template <PairLaw law, Partner partner> void baselinePairs(SlabPairBatch& b, int count, double dt)
 {
-    pairBody<law, partner, Pack2>(b, count, dt);
+    pairBody<law, partner, BaselinePack>(b, count, dt);
 }
 
 #ifdef DEM_HAVE_AVX2_LOOPS
