@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The slab mode's engine: System's step with 3-vectors and the 3D contact kernel.
+// The slab mode's engine: System's step with 3-vectors and the 3D contact kernel (its pair
+// forces in SlabPairForces.cpp).
 
 #include "dem/SlabSystem.hpp"
 #include "dem/Particles.hpp"
