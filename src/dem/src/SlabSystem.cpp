@@ -1,6 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The slab mode's engine: System's step with 3-vectors and the 3D contact kernel.
+// The slab mode's engine: System's step with 3-vectors and the 3D contact kernel (its pair
+// forces in SlabPairForces.cpp).
 
 #include "dem/SlabSystem.hpp"
 #include "dem/Particles.hpp"
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 
 namespace dem {
 
@@ -37,20 +39,6 @@ inline bool insideSlab(double x, double y, double z, const Box& b, double depth)
 {
     return x >= b.xMin && x <= b.xMax && y >= b.yMin && y <= b.yMax && z >= 0.0 && z <= depth;
 }
-
-/// Plain pointers to the slab's per-particle arrays that the pair loop reads and sums into,
-/// taken once before it: the loop reads them without re-loading through the vectors.
-struct Arrays {
-    double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *fx, *fy, *fz, *tx, *ty, *tz, *radius;
-
-    explicit Arrays(SlabParticles& p)
-        : x(p.x.data()), y(p.y.data()), z(p.z.data()), vx(p.vx.data()), vy(p.vy.data()),
-          vz(p.vz.data()), wx(p.wx.data()), wy(p.wy.data()), wz(p.wz.data()),
-          fx(p.fx.data()), fy(p.fy.data()), fz(p.fz.data()), tx(p.tx.data()),
-          ty(p.ty.data()), tz(p.tz.data()), radius(p.radius.data())
-    {
-    }
-};
 
 } // namespace
 
@@ -140,104 +128,63 @@ void SlabSystem::addParticle(int cls, const Vec3& pos, const Vec3& vel, const Ve
     recipe_.reset();   // the particles are no longer the recipe's alone
 }
 
-void SlabSystem::computePairForces(double historyDt)
-{
-    withContactLaw([&](auto law, auto rolling) {
-        sumPairForces<decltype(law), decltype(rolling)::value>(historyDt);
-    });
-}
-
-template <class Law, bool Rolling>
-void SlabSystem::sumPairForces(double historyDt)
-{
-    SlabParticles& p = p_;
-    const std::size_t n = p.size();
-    const int* pi = pairs_.i.data();
-    const int* pj = pairs_.j.data();
-    const int* law = pairs_.law.data();
-    const int* groupStart = pairs_.groupStart.data();
-    Vec3* xiT = pairs_.xi.data();
-    const ContactLaw* laws = pairLaws_.data();
-    // Sums over each particle's pairs in a.f* and a.t*; the t* hold the sum of nHat x Ft
-    // until addWallForcesAndKick multiplies it by the radius (the torque on either partner
-    // is r nHat x Ft, see contactForce).
-    const Arrays a(p);
-
-    // A touching pair (found by the group's first pass)
-    auto pairForce = [&](Index k, std::size_t& touching, double& maxOverlap) {
-        const int i = pi[k];
-        const int j = pj[k];
-        const Vec3 d(a.x[j] - a.x[i], a.y[j] - a.y[i], a.z[j] - a.z[i]);
-        const double dist = std::sqrt(d.x() * d.x() + d.y() * d.y() + d.z() * d.z());
-        PairGeometry3 g;
-        g.overlap = a.radius[i] + a.radius[j] - dist;
-        g.nHat = d / dist;
-        g.rI = a.radius[i];
-        g.rJ = a.radius[j];
-        // Contact points: v_i + w_i x (r_i n) and v_j + w_j x (-r_j n).
-        const Vec3 wI(a.wx[i], a.wy[i], a.wz[i]);
-        const Vec3 wJ(a.wx[j], a.wy[j], a.wz[j]);
-        g.vRel = Vec3(a.vx[i] - a.vx[j], a.vy[i] - a.vy[j], a.vz[i] - a.vz[j])
-                 + (g.rI * wI + g.rJ * wJ).cross(g.nHat);
-        g.xiT = xiT[k];
-        if constexpr (Rolling) g.omegaRel = wI - wJ;
-        const PairForce3 f = contactForce<3, Law, Rolling>(g, laws[law[k]], historyDt);
-        xiT[k] = f.xiT;
-        const Vec3 nxF = g.nHat.cross(f.ft);
-        a.fx[i] += f.force.x(); a.fy[i] += f.force.y(); a.fz[i] += f.force.z();
-        a.fx[j] -= f.force.x(); a.fy[j] -= f.force.y(); a.fz[j] -= f.force.z();
-        if constexpr (Rolling) {
-            // The rolling torque over the radius the torque sums are multiplied by
-            const Vec3 ti = nxF + f.rollingTorque / g.rI;
-            const Vec3 tj = nxF - f.rollingTorque / g.rJ;
-            a.tx[i] += ti.x(); a.ty[i] += ti.y(); a.tz[i] += ti.z();
-            a.tx[j] += tj.x(); a.ty[j] += tj.y(); a.tz[j] += tj.z();
-        } else {
-            a.tx[i] += nxF.x(); a.ty[i] += nxF.y(); a.tz[i] += nxF.z();
-            a.tx[j] += nxF.x(); a.ty[j] += nxF.y(); a.tz[j] += nxF.z();
-        }
-        ++touching;
-        maxOverlap = std::max(maxOverlap, g.overlap);
-    };
-
-    // The groups as sumPairGroups runs them, in two passes as System's: the touching pairs
-    // picked out without a branch, then their forces in list order.
-    touchingScratch_.resize(pairs_.size());   // (a loaded state's list has no build here)
-    int* touchingPairs = touchingScratch_.data();
-    auto group = [&](int gr, std::size_t& touching, double& maxOverlap) {
-        int* picked = touchingPairs + groupStart[gr];
-        int m = 0;
-        const int end = groupStart[gr + 1];   // read once: the picks are ints too
-        for (int k = groupStart[gr]; k < end; ++k) {
-            const int i = pi[k];
-            const int j = pj[k];
-            const double dx = a.x[j] - a.x[i];
-            const double dy = a.y[j] - a.y[i];
-            const double dz = a.z[j] - a.z[i];
-            const double rSum = a.radius[i] + a.radius[j];
-            const bool touch = !(dx * dx + dy * dy + dz * dz >= rSum * rSum);   // NaN: touching
-            picked[m] = k;
-            m += touch;
-            double* xi = xiT[k].data();   // separated: the contact's history ends
-            xi[0] = selectWithoutBranch(touch, xi[0], 0.0);
-            xi[1] = selectWithoutBranch(touch, xi[1], 0.0);
-            xi[2] = selectWithoutBranch(touch, xi[2], 0.0);
-        }
-        for (int q = 0; q < m; ++q) pairForce(picked[q], touching, maxOverlap);
-    };
-    auto zeroBlock = [&](std::size_t first, std::size_t last) {
-        for (double* sum : {a.fx, a.fy, a.fz, a.tx, a.ty, a.tz}) {
-            std::fill(sum + first, sum + last, 0.0);
-        }
-    };
-    sumPairGroups(settings_.nThreads, n, zeroBlock, group, contactCount_, maxOverlap_);
-}
-
 void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
 {
     withContactLaw([&](auto law, auto rolling) {
         addWallForcesAndKickWith<decltype(law), decltype(rolling)::value>(historyDt, kick, fluid);
     });
+}
+
+template <class Law>
+void SlabSystem::batchedWallForces(const WallPick* picked, int m, double historyDt,
+                                   std::size_t& touching, double& maxOverlap)
+{
+    constexpr bool hertz = std::is_same_v<Law, HertzMindlin>;
+    static_assert(hertz || std::is_same_v<Law, LinearSpringDashpot>,
+                  "a law needs its version of the batched kernel (SlabPairKernel.cpp)");
+    const SlabPairLoop kernel =
+        hertz ? streamingLoops().slabHertzWalls : streamingLoops().slabLinearWalls;
+    SlabParticles& p = p_;
+    Vec3* wXi = wallContacts_.xi.data();
+    SlabPairBatch b;
+    for (int first = 0; first < m; first += SlabPairBatch::capacity) {
+        const int count = std::min(m - first, SlabPairBatch::capacity);
+        for (int q = 0; q < count; ++q) {
+            const auto [s, i] = picked[first + q];
+            const double ri = p.radius[i];
+            const PlaneWall3& wall = walls_[wallContacts_.wall[s]];
+            // As contactForce's caller: nHat = -wall.nHat, v_i + (r_i w_i) x nHat
+            b.overlap[q] = ri - wall.distance(p.position(i));
+            b.nx[q] = -wall.nHat.x();
+            b.ny[q] = -wall.nHat.y();
+            b.nz[q] = -wall.nHat.z();
+            b.dvx[q] = p.vx[i];
+            b.dvy[q] = p.vy[i];
+            b.dvz[q] = p.vz[i];
+            b.sx[q] = ri * p.wx[i];
+            b.sy[q] = ri * p.wy[i];
+            b.sz[q] = ri * p.wz[i];
+            b.xix[q] = wXi[s].x();
+            b.xiy[q] = wXi[s].y();
+            b.xiz[q] = wXi[s].z();
+            const ContactLaw& c = wallLaws_[p.classIndex[i]];
+            b.normal[q] = hertz ? c.hertzKn : c.kn;
+            b.normalDamping[q] = hertz ? c.hertzEtaN : c.etaN;
+            b.tangential[q] = hertz ? c.mindlinKt : c.kt;
+            b.tangentialDamping[q] = hertz ? c.mindlinEtaT : c.etaT;
+            b.mu[q] = c.mu;
+        }
+        kernel(b, count, historyDt);
+        for (int q = 0; q < count; ++q) {
+            const auto [s, i] = picked[first + q];
+            const double ri = p.radius[i];
+            p.fx[i] += b.fx[q]; p.fy[i] += b.fy[q]; p.fz[i] += b.fz[q];
+            p.tx[i] += ri * b.nxFx[q]; p.ty[i] += ri * b.nxFy[q]; p.tz[i] += ri * b.nxFz[q];
+            wXi[s] = Vec3(b.xix[q], b.xiy[q], b.xiz[q]);
+            maxOverlap = std::max(maxOverlap, b.overlap[q]);
+        }
+        touching += static_cast<std::size_t>(count);
+    }
 }
 
 template <class Law, bool Rolling>
@@ -300,24 +247,28 @@ void SlabSystem::addWallForcesAndKickWith(double historyDt, bool kick, bool flui
                 wXi[s] = selectWithoutBranch(touch, wXi[s], Vec3::Zero());
             }
         }
-        for (int q = 0; q < m; ++q) {
-            const auto [s, i] = picked[q];
-            const double ri = p.radius[i];
-            const PlaneWall3& wall = walls[wWall[s]];
-            PairGeometry3 c;
-            c.overlap = ri - wall.distance(p.position(i));
-            c.nHat = -wall.nHat;
-            c.vRel = p.velocity(i) + (ri * p.spin(i)).cross(c.nHat);
-            c.rI = ri;
-            c.rJ = 0.0;
-            c.xiT = wXi[s];
-            if constexpr (Rolling) c.omegaRel = p.spin(i);
-            const PairForce3 f = contactForce<3, Law, Rolling>(c, wallLaws[p.classIndex[i]], historyDt);
-            p.fx[i] += f.force.x(); p.fy[i] += f.force.y(); p.fz[i] += f.force.z();
-            p.tx[i] += f.torqueI.x(); p.ty[i] += f.torqueI.y(); p.tz[i] += f.torqueI.z();
-            wXi[s] = f.xiT;
-            ++touching;
-            maxOverlap = std::max(maxOverlap, c.overlap);
+        if constexpr (Rolling) {
+            for (int q = 0; q < m; ++q) {
+                const auto [s, i] = picked[q];
+                const double ri = p.radius[i];
+                const PlaneWall3& wall = walls[wWall[s]];
+                PairGeometry3 c;
+                c.overlap = ri - wall.distance(p.position(i));
+                c.nHat = -wall.nHat;
+                c.vRel = p.velocity(i) + (ri * p.spin(i)).cross(c.nHat);
+                c.rI = ri;
+                c.rJ = 0.0;
+                c.xiT = wXi[s];
+                c.omegaRel = p.spin(i);
+                const PairForce3 f = contactForce<3, Law, true>(c, wallLaws[p.classIndex[i]], historyDt);
+                p.fx[i] += f.force.x(); p.fy[i] += f.force.y(); p.fz[i] += f.force.z();
+                p.tx[i] += f.torqueI.x(); p.ty[i] += f.torqueI.y(); p.tz[i] += f.torqueI.z();
+                wXi[s] = f.xiT;
+                ++touching;
+                maxOverlap = std::max(maxOverlap, c.overlap);
+            }
+        } else {
+            batchedWallForces<Law>(picked, m, historyDt, touching, maxOverlap);
         }
         kickLoop(kickArrays, first, last, h, gx, gy, weight, mode);
     }

@@ -107,7 +107,11 @@ const StreamingLoops& baselineLoops()
                                       Compiled<driftBody, DriftLoop>::baseline,
                                       Compiled<kickBody, KickLoop>::baseline,
                                       slabLoops::drift(SimdLevel::baseline),
-                                      slabLoops::kick(SimdLevel::baseline)};
+                                      slabLoops::kick(SimdLevel::baseline),
+                                      slabLoops::linearPairs(SimdLevel::baseline),
+                                      slabLoops::hertzPairs(SimdLevel::baseline),
+                                      slabLoops::linearWalls(SimdLevel::baseline),
+                                      slabLoops::hertzWalls(SimdLevel::baseline)};
     return loops;
 }
 
@@ -143,7 +147,11 @@ const StreamingLoops& streamingLoops(SimdLevel level)
                                           Compiled<driftBody, DriftLoop>::avx2,
                                           Compiled<kickBody, KickLoop>::avx2,
                                           slabLoops::drift(SimdLevel::avx2),
-                                          slabLoops::kick(SimdLevel::avx2)};
+                                          slabLoops::kick(SimdLevel::avx2),
+                                          slabLoops::linearPairs(SimdLevel::avx2),
+                                          slabLoops::hertzPairs(SimdLevel::avx2),
+                                          slabLoops::linearWalls(SimdLevel::avx2),
+                                          slabLoops::hertzWalls(SimdLevel::avx2)};
     if (cpuHasAvx2()) return avx2Loops;
 #endif
     throw Error("environment variable DEM_SIMD = avx2: this CPU (or build) has no AVX2; unset "

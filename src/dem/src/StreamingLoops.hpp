@@ -94,6 +94,32 @@ using SlabKickLoop = void (*)(const SlabKickArrays& a, std::ptrdiff_t first,
                              std::ptrdiff_t last, double h, double gx, double gy,
                              double weight, KickMode mode);
 
+/// The touching contacts of the slab in a batch, structure of arrays: the pair or wall loop
+/// gathers them, a SlabPairLoop evaluates contactForce<3, Law> for all at once (vectorised
+/// across the contacts, no branch), the loop adds the forces in list order. One contact's
+/// operations and their order are contactForce's: the same bits.
+struct SlabPairBatch {
+    static constexpr int capacity = 64;
+    // In, pairs: x_j - x_i, r_i + r_j; walls: nHat (towards the wall), the overlap. Both:
+    // v_i - v_j (walls: v_i), r_i w_i + r_j w_j (walls: r_i w_i), the law's constants (linear:
+    // kn, etaN, kt, etaT; Hertz-Mindlin: hertzKn, hertzEtaN, mindlinKt, mindlinEtaT), mu.
+    // xi*: the stored tangential history in, the new one out.
+    alignas(64) double dx[capacity], dy[capacity], dz[capacity], rSum[capacity];
+    alignas(64) double nx[capacity], ny[capacity], nz[capacity];
+    alignas(64) double dvx[capacity], dvy[capacity], dvz[capacity];
+    alignas(64) double sx[capacity], sy[capacity], sz[capacity];
+    alignas(64) double xix[capacity], xiy[capacity], xiz[capacity];
+    alignas(64) double normal[capacity], normalDamping[capacity], tangential[capacity],
+        tangentialDamping[capacity], mu[capacity];
+    // Out: the force on i, nHat x Ft (the torque on either partner over its radius), overlap.
+    alignas(64) double fx[capacity], fy[capacity], fz[capacity];
+    alignas(64) double nxFx[capacity], nxFy[capacity], nxFz[capacity], overlap[capacity];
+};
+
+/// contactForce<3, Law> without rolling resistance for contacts [0, count) of a batch, the
+/// history accumulated over dt.
+using SlabPairLoop = void (*)(SlabPairBatch& b, int count, double dt);
+
 enum class SimdLevel { baseline, avx2 };
 
 struct StreamingLoops {
@@ -102,6 +128,10 @@ struct StreamingLoops {
     KickLoop secondHalfKick;
     SlabDriftLoop slabFirstHalfKickAndDrift;
     SlabKickLoop slabSecondHalfKick;
+    SlabPairLoop slabLinearPairs;   ///< LinearSpringDashpot
+    SlabPairLoop slabHertzPairs;    ///< HertzMindlin
+    SlabPairLoop slabLinearWalls;   ///< the wall contacts' (nHat and overlap given)
+    SlabPairLoop slabHertzWalls;
 };
 
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -126,6 +156,10 @@ struct Compiled<body, void (*)(Args...)> {
 namespace slabLoops {
 SlabDriftLoop drift(SimdLevel level);
 SlabKickLoop kick(SimdLevel level);
+SlabPairLoop linearPairs(SimdLevel level);   // SlabPairKernel.cpp
+SlabPairLoop hertzPairs(SimdLevel level);
+SlabPairLoop linearWalls(SimdLevel level);
+SlabPairLoop hertzWalls(SimdLevel level);
 } // namespace slabLoops
 
 /// Whether this CPU runs the AVX2 version.

@@ -139,11 +139,17 @@ private:
     template <class Law, bool Rolling> void addWallForcesAndKickWith(double historyDt, bool kick, bool fluid);
     [[noreturn]] void throwLostParticle() const;
 
-    std::vector<int> touchingScratch_;   // the touching pairs of each group, per step
     struct WallPick {
         int slot;       // in the wall list
         int particle;
     };
+    /// The touching wall contacts picked[0, m) without rolling resistance, in batches by
+    /// the vectorised kernel, added in their order.
+    template <class Law>
+    void batchedWallForces(const WallPick* picked, int m, double historyDt,
+                           std::size_t& touching, double& maxOverlap);
+
+    std::vector<int> touchingScratch_;   // the touching pairs of each group, per step
     std::vector<WallPick> wallPicks_;    // the touching wall contacts, per step
 };
 
