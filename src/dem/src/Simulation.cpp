@@ -4,6 +4,8 @@
 #include "dem/SlabSystem.hpp"
 #include "dem/System.hpp"
 
+#include <utility>
+
 
 namespace dem {
 
@@ -32,18 +34,29 @@ SlabSystem& Simulation::slab(const char* what) const
     return *slab_;
 }
 
+template <class F> decltype(auto) Simulation::onEngine(F&& f)
+{
+    if (slab_) return f(*slab_);
+    return f(*system_);
+}
+
+template <class F> decltype(auto) Simulation::onEngine(F&& f) const
+{
+    if (slab_) return f(std::as_const(*slab_));
+    return f(std::as_const(*system_));
+}
+
+// A member called on whichever engine is set, its result as the engine returns it.
+#define DEM_ON_ENGINE(call) onEngine([&](auto& e) -> decltype(auto) { return e.call; })
+
 void Simulation::packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed)
 {
-    if (slab_) {
-        slab_->packRandom(countPerClass, region, seed);
-        return;
-    }
-    system_->packRandom(countPerClass, region, seed);
+    DEM_ON_ENGINE(packRandom(countPerClass, region, seed));
 }
 
 double Simulation::packBed(const BedRecipe& recipe, const SettleProgress& progress)
 {
-    return slab_ ? slab_->packBed(recipe, progress) : system_->packBed(recipe, progress);
+    return DEM_ON_ENGINE(packBed(recipe, progress));
 }
 
 void Simulation::addParticle(int classIndex, double x, double y, double vx, double vy, double omega)
@@ -63,16 +76,15 @@ void Simulation::addParticle(int classIndex, const Vector3& position, const Vect
 
 double Simulation::settle(double maxTime, double keTolerance, const SettleProgress& progress)
 {
-    return slab_ ? slab_->settle(maxTime, keTolerance, progress)
-                 : system_->settle(maxTime, keTolerance, progress);
+    return DEM_ON_ENGINE(settle(maxTime, keTolerance, progress));
 }
 std::size_t Simulation::size() const
 {
-    return slab_ ? slab_->particles().size() : system_->particles().size();
+    return DEM_ON_ENGINE(particles().size());
 }
 const Settings& Simulation::settings() const
 {
-    return slab_ ? slab_->settings() : system_->settings();
+    return DEM_ON_ENGINE(settings());
 }
 
 // Arrays of both engines under one name: the slab's if present, else the discs'.
@@ -102,18 +114,8 @@ double* Simulation::extraForceY() { return DEM_ARRAY(extraFy, extraFy); }
 double* Simulation::gasVelocityZ() { return slab("gasVelocityZ").particles().gasVz.data(); }
 double* Simulation::extraForceZ() { return slab("extraForceZ").particles().extraFz.data(); }
 
-void Simulation::advance(double dtOuter)
-{
-    if (slab_) {
-        slab_->advance(dtOuter);
-        return;
-    }
-    system_->advance(dtOuter);
-}
-void Simulation::sortByCell()
-{
-    slab_ ? slab_->sortByCell() : system_->sortByCell();
-}
+void Simulation::advance(double dtOuter) { DEM_ON_ENGINE(advance(dtOuter)); }
+void Simulation::sortByCell() { DEM_ON_ENGINE(sortByCell()); }
 
 const double* Simulation::meanVelocityX() const { return DEM_ARRAY(meanVx, meanVx); }
 const double* Simulation::meanVelocityY() const { return DEM_ARRAY(meanVy, meanVy); }
@@ -127,74 +129,31 @@ const double* Simulation::meanFluidForceZ() const
 
 #undef DEM_ARRAY
 
-double Simulation::time() const { return slab_ ? slab_->time() : system_->time(); }
-std::int64_t Simulation::stepCount() const { return slab_ ? slab_->stepCount() : system_->stepCount(); }
-double Simulation::kineticEnergy() const
-{
-    return slab_ ? slab_->kineticEnergy() : system_->kineticEnergy();
-}
+double Simulation::time() const { return DEM_ON_ENGINE(time()); }
+std::int64_t Simulation::stepCount() const { return DEM_ON_ENGINE(stepCount()); }
+double Simulation::kineticEnergy() const { return DEM_ON_ENGINE(kineticEnergy()); }
 double Simulation::timeStepBound() const
 {
     // Eq. 7 for the smallest particle: its mass is a sphere's in both modes.
     return slab_ ? dem::timeStepBound(slab_->settings()) : system_->timeStepBound();
 }
-std::size_t Simulation::contactCount() const
-{
-    return slab_ ? slab_->contactCount() : system_->contactCount();
-}
-double Simulation::elasticEnergy() const
-{
-    return slab_ ? slab_->elasticEnergy() : system_->elasticEnergy();
-}
-double Simulation::maxOverlap() const { return slab_ ? slab_->maxOverlap() : system_->maxOverlap(); }
-std::int64_t Simulation::neighbourListBuilds() const
-{
-    return slab_ ? slab_->neighbourListBuilds() : system_->neighbourListBuilds();
-}
-double Simulation::neighbourSkin() const
-{
-    return slab_ ? slab_->neighbourSkin() : system_->neighbourSkin();
-}
-std::size_t Simulation::memoryBytes() const
-{
-    return slab_ ? slab_->memoryBytes() : system_->memoryBytes();
-}
+std::size_t Simulation::contactCount() const { return DEM_ON_ENGINE(contactCount()); }
+double Simulation::elasticEnergy() const { return DEM_ON_ENGINE(elasticEnergy()); }
+double Simulation::maxOverlap() const { return DEM_ON_ENGINE(maxOverlap()); }
+std::int64_t Simulation::neighbourListBuilds() const { return DEM_ON_ENGINE(neighbourListBuilds()); }
+double Simulation::neighbourSkin() const { return DEM_ON_ENGINE(neighbourSkin()); }
+std::size_t Simulation::memoryBytes() const { return DEM_ON_ENGINE(memoryBytes()); }
 
-void Simulation::save(const std::string& path) const
-{
-    if (slab_) {
-        slab_->save(path);
-        return;
-    }
-    system_->save(path);
-}
-void Simulation::load(const std::string& path)
-{
-    if (slab_) {
-        slab_->load(path);
-        return;
-    }
-    system_->load(path);
-}
+void Simulation::save(const std::string& path) const { DEM_ON_ENGINE(save(path)); }
+void Simulation::load(const std::string& path) { DEM_ON_ENGINE(load(path)); }
 bool Simulation::loadBed(const std::string& path, const BedRecipe& recipe)
 {
-    return slab_ ? slab_->loadBed(path, recipe) : system_->loadBed(path, recipe);
+    return DEM_ON_ENGINE(loadBed(path, recipe));
 }
-const BedRecipe* Simulation::recipe() const
-{
-    return slab_ ? slab_->recipe() : system_->recipe();
-}
-const std::string& Simulation::runRecord() const
-{
-    return slab_ ? slab_->runRecord() : system_->runRecord();
-}
-void Simulation::setRunRecord(const std::string& record)
-{
-    if (slab_) {
-        slab_->setRunRecord(record);
-    } else {
-        system_->setRunRecord(record);
-    }
-}
+const BedRecipe* Simulation::recipe() const { return DEM_ON_ENGINE(recipe()); }
+const std::string& Simulation::runRecord() const { return DEM_ON_ENGINE(runRecord()); }
+void Simulation::setRunRecord(const std::string& record) { DEM_ON_ENGINE(setRunRecord(record)); }
+
+#undef DEM_ON_ENGINE
 
 } // namespace dem

@@ -276,6 +276,10 @@ public:
 
 private:
     SlabSystem& slab(const char* what) const;   // throws in 2D, naming `what`
+    /// f(engine) on the engine that is set (Simulation.cpp's one dispatch); const here, a
+    /// const engine.
+    template <class F> decltype(auto) onEngine(F&& f);
+    template <class F> decltype(auto) onEngine(F&& f) const;
 
     // Exactly one engine is set. Every call branches once on slab_, outside any loop, so
     // the 2D path runs the System's code unchanged.
