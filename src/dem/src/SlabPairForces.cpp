@@ -123,12 +123,7 @@ void SlabSystem::sumPairForces(double historyDt)
                 b.xix[q] = xiT[k].x();
                 b.xiy[q] = xiT[k].y();
                 b.xiz[q] = xiT[k].z();
-                const ContactLaw& c = laws[law[k]];
-                b.normal[q] = hertz ? c.hertzKn : c.kn;
-                b.normalDamping[q] = hertz ? c.hertzEtaN : c.etaN;
-                b.tangential[q] = hertz ? c.mindlinKt : c.kt;
-                b.tangentialDamping[q] = hertz ? c.mindlinEtaT : c.etaT;
-                b.mu[q] = c.mu;
+                b.setLaw(q, laws[law[k]], hertz);
             }
             kernel(b, count, historyDt);
             for (int q = 0; q < count; ++q) {

@@ -167,12 +167,7 @@ void SlabSystem::batchedWallForces(const WallPick* picked, int m, double history
             b.xix[q] = wXi[s].x();
             b.xiy[q] = wXi[s].y();
             b.xiz[q] = wXi[s].z();
-            const ContactLaw& c = wallLaws_[p.classIndex[i]];
-            b.normal[q] = hertz ? c.hertzKn : c.kn;
-            b.normalDamping[q] = hertz ? c.hertzEtaN : c.etaN;
-            b.tangential[q] = hertz ? c.mindlinKt : c.kt;
-            b.tangentialDamping[q] = hertz ? c.mindlinEtaT : c.etaT;
-            b.mu[q] = c.mu;
+            b.setLaw(q, wallLaws_[p.classIndex[i]], hertz);
         }
         kernel(b, count, historyDt);
         for (int q = 0; q < count; ++q) {

@@ -50,17 +50,6 @@ std::string lawName(double code)
     return "unknown law " + formatValue(code);
 }
 
-/// The moduli's entries: the linear law does not read them.
-bool isModulus(const std::string& name)
-{
-    auto endsWith = [&](const std::string& tail) {
-        return name.size() >= tail.size()
-               && name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
-    };
-    return endsWith("youngsModulus") || endsWith("YoungsModulus") || endsWith("poissonRatio")
-           || endsWith("PoissonRatio");
-}
-
 std::string className(const Settings& s, std::size_t k)
 {
     return k < s.classes.size() ? "'" + s.classes[k].name + "'" : std::to_string(k);
@@ -158,12 +147,16 @@ std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
     const double extent = extentOf({here[box], here[box + 1], here[box + 2], here[box + 3]});
     const std::size_t law = static_cast<std::size_t>(
         std::find(names.begin(), names.end(), "contact law") - names.begin());
+    // The moduli, from the walls' to the classes' last (before the skin): the linear law
+    // does not read them
+    const std::size_t moduli = static_cast<std::size_t>(
+        std::find(names.begin(), names.end(), "contact wallYoungsModulus") - names.begin());
     const bool bothLinear = inFile[law] == 0.0 && here[law] == 0.0;
     std::vector<Difference> d;
     for (std::size_t k = 0; k + 1 < here.size(); ++k) {   // not the skin
         if (inFile[k] == here[k]) continue;
         if (k >= box && k < box + 4 && sameCoordinate(inFile[k], here[k], extent)) continue;
-        if (bothLinear && isModulus(names[k])) continue;
+        if (bothLinear && k >= moduli) continue;
         if (k == law) {
             d.push_back({names[k], lawName(inFile[k]), lawName(here[k])});
             continue;

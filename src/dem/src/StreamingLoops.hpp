@@ -18,6 +18,7 @@
 // and the test above, which runs both versions in one process, would then need a second
 // compile of each body for the baseline, the work Compiled does here.
 
+#include "dem/ContactLaw.hpp"
 #include "dem/Facade.hpp"   // Box
 
 #include <cstddef>
@@ -114,6 +115,16 @@ struct SlabPairBatch {
     // Out: the force on i, nHat x Ft (the torque on either partner over its radius), overlap.
     alignas(64) double fx[capacity], fy[capacity], fz[capacity];
     alignas(64) double nxFx[capacity], nxFy[capacity], nxFz[capacity], overlap[capacity];
+
+    /// Contact q's law constants: the Hertz-Mindlin ones or the linear ones.
+    void setLaw(int q, const ContactLaw& c, bool hertz)
+    {
+        normal[q] = hertz ? c.hertzKn : c.kn;
+        normalDamping[q] = hertz ? c.hertzEtaN : c.etaN;
+        tangential[q] = hertz ? c.mindlinKt : c.kt;
+        tangentialDamping[q] = hertz ? c.mindlinEtaT : c.etaT;
+        mu[q] = c.mu;
+    }
 };
 
 /// contactForce<3, Law> without rolling resistance for contacts [0, count) of a batch, the

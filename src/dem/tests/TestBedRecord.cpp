@@ -32,18 +32,6 @@ Settings settings()
     return s;
 }
 
-BedRecipe recipe()
-{
-    BedRecipe r;
-    r.countPerClass = {120, 40};
-    r.region = {0.0, 0.03, 0.0, 0.04};
-    r.seed = 42;
-    r.settleTime = 0.002;
-    return r;
-}
-
-std::string tempPath(const std::string& name) { return testing::TempDir() + name; }
-
 std::string bytesOf(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
@@ -56,19 +44,8 @@ void writeBytes(const std::string& path, const std::string& bytes)
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }
 
-/// The message of the dem::Error that `call` throws ("" if none).
-template <class Call> std::string errorOf(Call&& call)
-{
-    try {
-        call();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
-
 /// A packed bed saved to `path`.
-void saveBed(const std::string& path, const BedRecipe& r = recipe())
+void saveBed(const std::string& path, const BedRecipe& r = smallBedRecipe())
 {
     Simulation sim(settings());
     sim.packBed(r);
@@ -81,11 +58,11 @@ TEST(BedRecord, SameRecipeLoadsTheBed)
 {
     const std::string path = tempPath("bedSame.state");
     Simulation made(settings());
-    made.packBed(recipe());
+    made.packBed(smallBedRecipe());
     made.save(path);
 
     Simulation used(settings());
-    EXPECT_TRUE(used.loadBed(path, recipe()));
+    EXPECT_TRUE(used.loadBed(path, smallBedRecipe()));
     ASSERT_EQ(used.size(), 160u);
     EXPECT_EQ(std::memcmp(used.y(), made.y(), used.size() * sizeof(double)), 0);
     ASSERT_NE(used.recipe(), nullptr);
@@ -97,7 +74,7 @@ TEST(BedRecord, AnotherCountIsNamed)
 {
     const std::string path = tempPath("bedCount.state");
     saveBed(path);
-    BedRecipe other = recipe();
+    BedRecipe other = smallBedRecipe();
     other.countPerClass[0] = 200;
     Simulation sim(settings());
     const std::string what = errorOf([&] { sim.loadBed(path, other); });
@@ -113,19 +90,19 @@ TEST(BedRecord, AnotherSeedSettlingOrRegionIsNamed)
 {
     const std::string path = tempPath("bedSeed.state");
     saveBed(path);
-    BedRecipe seed = recipe();
+    BedRecipe seed = smallBedRecipe();
     seed.seed = 7;
     Simulation sim(settings());
     std::string what = errorOf([&] { sim.loadBed(path, seed); });
     EXPECT_NE(what.find("seed = 42 in the file, 7 here"), std::string::npos) << what;
 
-    BedRecipe settle = recipe();
+    BedRecipe settle = smallBedRecipe();
     settle.settleTime = 0.003;
     what = errorOf([&] { sim.loadBed(path, settle); });
     EXPECT_NE(what.find("settle time = 0.002 s in the file, 0.003 s here"), std::string::npos)
         << what;
 
-    BedRecipe region = recipe();
+    BedRecipe region = smallBedRecipe();
     region.region.yMax = 0.05;
     what = errorOf([&] { sim.loadBed(path, region); });
     EXPECT_NE(what.find("packing region = [0, 0.03] x [0, 0.04] m in the file, "
@@ -150,7 +127,7 @@ TEST(BedRecord, AnotherDiameterIsNamed)
     Settings s = settings();
     s.classes[0].diameter = 1.6e-3;
     Simulation sim(s);
-    const std::string what = errorOf([&] { sim.loadBed(path, recipe()); });
+    const std::string what = errorOf([&] { sim.loadBed(path, smallBedRecipe()); });
     EXPECT_NE(what.find("other settings: class 'small' diameter = 0.0015 in the file, 0.0016 here"),
               std::string::npos)
         << what;
@@ -184,7 +161,7 @@ TEST(BedRecord, RestartMismatchNamesTheSetting)
     Simulation same(settings());
     same.load(path);
     ASSERT_NE(same.recipe(), nullptr);
-    EXPECT_EQ(same.recipe()->countPerClass, recipe().countPerClass);
+    EXPECT_EQ(same.recipe()->countPerClass, smallBedRecipe().countPerClass);
     std::remove(path.c_str());
 }
 
@@ -196,7 +173,7 @@ TEST(BedRecord, ConvertedVersionThreeBedIsCheckedOnItsCounts)
     // build (after the step count and the build count).
     const std::string path = tempPath("bedVersion3.state");
     Simulation sim(settings());
-    sim.packRandom(recipe().countPerClass, recipe().region, 42);
+    sim.packRandom(smallBedRecipe().countPerClass, smallBedRecipe().region, 42);
     EXPECT_EQ(sim.recipe(), nullptr);
     sim.save(path);
     std::string bytes = bytesOf(path);
@@ -222,11 +199,11 @@ TEST(BedRecord, ConvertedVersionThreeBedIsCheckedOnItsCounts)
     convertState(path, path);
 
     Simulation old(settings());
-    EXPECT_FALSE(old.loadBed(path, recipe()));   // counts match: read, not fully checked
+    EXPECT_FALSE(old.loadBed(path, smallBedRecipe()));   // counts match: read, not fully checked
     EXPECT_EQ(old.size(), 160u);
     EXPECT_EQ(old.recipe(), nullptr);
 
-    BedRecipe other = recipe();
+    BedRecipe other = smallBedRecipe();
     other.countPerClass = {600, 130};
     Simulation refused(settings());
     const std::string what = errorOf([&] { refused.loadBed(path, other); });
@@ -241,12 +218,12 @@ TEST(BedRecord, PackBedNeedsAnEmptySimulation)
 {
     Simulation sim(settings());
     sim.addParticle(0, 0.01, 0.01);
-    const std::string what = errorOf([&] { sim.packBed(recipe()); });
+    const std::string what = errorOf([&] { sim.packBed(smallBedRecipe()); });
     EXPECT_NE(what.find("particles already"), std::string::npos) << what;
 
     // A particle added to a packed bed: the recipe no longer describes it.
     Simulation packed(settings());
-    packed.packBed(recipe());
+    packed.packBed(smallBedRecipe());
     ASSERT_NE(packed.recipe(), nullptr);
     packed.addParticle(0, 0.015, 0.095);
     EXPECT_EQ(packed.recipe(), nullptr);
@@ -265,7 +242,7 @@ TEST(BedRecord, FailedWriteNamesFileAndReasonAndKeepsTheEarlierState)
     // The temporary cannot be created (a directory is in its place).
     fs::create_directory(path + ".tmp");
     Simulation other(settings());
-    other.packBed([] { BedRecipe r = recipe(); r.seed = 3; return r; }());
+    other.packBed([] { BedRecipe r = smallBedRecipe(); r.seed = 3; return r; }());
     std::string what = errorOf([&] { other.save(path); });
     EXPECT_NE(what.find("cannot write state file '" + path + "'"), std::string::npos) << what;
     EXPECT_NE(what.find("Is a directory"), std::string::npos) << what;
@@ -332,7 +309,7 @@ TEST(BedRecord, SettlingReportsItsProgressWithoutChangingTheBed)
 {
     // Checked every 100 steps: 0.005 s at dt = 1e-5 s is 500 steps, so 5 reports at
     // 0, 1, ..., 4 ms (no energy tolerance: the whole settling time runs).
-    BedRecipe r = recipe();
+    BedRecipe r = smallBedRecipe();
     r.settleTime = 0.005;
     ASSERT_DOUBLE_EQ(settings().dt, 1e-5);
     std::vector<double> times, energies;
@@ -368,7 +345,7 @@ TEST(BedRecord, BoxApartByRoundOffLoadsTheBed)
     Settings nearly = settings();
     nearly.box.xMax = std::nextafter(box.xMax, 1.0);
     nearly.box.yMax = std::nextafter(nearly.box.yMax, 0.0);
-    BedRecipe r = recipe();
+    BedRecipe r = smallBedRecipe();
     r.region.xMax = nearly.box.xMax;
     Simulation used(nearly);
     EXPECT_TRUE(used.loadBed(path, r));
@@ -376,7 +353,7 @@ TEST(BedRecord, BoxApartByRoundOffLoadsTheBed)
 
     Settings other = settings();
     other.box.xMax = box.xMax * (1 + 1e-9);
-    BedRecipe wider = recipe();
+    BedRecipe wider = smallBedRecipe();
     wider.region.xMax = other.box.xMax;
     Simulation refused(other);
     const std::string what = errorOf([&] { refused.loadBed(path, wider); });

@@ -23,29 +23,6 @@ Settings settings()
     return s;
 }
 
-BedRecipe recipe()
-{
-    BedRecipe r;
-    r.countPerClass = {120, 40};
-    r.region = {0.0, 0.03, 0.0, 0.04};
-    r.seed = 42;
-    r.settleTime = 0.002;
-    return r;
-}
-
-std::string tempPath(const std::string& name) { return testing::TempDir() + name; }
-
-/// The message of the dem::Error that `call` throws ("" if none).
-template <class Call> std::string errorOf(Call&& call)
-{
-    try {
-        call();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
-
 /// The paper's particles and walls under HertzMindlin, of Young's modulus 1e7 Pa and
 /// Poisson's ratio 0.3 (dt = 1e-5 s is below the law's bound, 7e-5 s).
 Settings hertzSettings()
@@ -61,16 +38,16 @@ Settings hertzSettings()
     return s;
 }
 
-/// The message of loading, for a bed of `recipe()`, the bed packed under `made` into a
+/// The message of loading, for a bed of `smallBedRecipe()`, the bed packed under `made` into a
 /// simulation of `used`.
 std::string loadedUnder(const Settings& made, const Settings& used, const std::string& name)
 {
     const std::string path = tempPath(name);
     Simulation packed(made);
-    packed.packBed(recipe());
+    packed.packBed(smallBedRecipe());
     packed.save(path);
     Simulation sim(used);
-    const std::string what = errorOf([&] { sim.loadBed(path, recipe()); });
+    const std::string what = errorOf([&] { sim.loadBed(path, smallBedRecipe()); });
     std::remove(path.c_str());
     return what;
 }

@@ -5,7 +5,10 @@
 
 #include "dem/Facade.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
+#include <string>
 
 namespace dem::test {
 
@@ -26,6 +29,32 @@ inline Settings paperSettings(const Box& box, double dt = 1e-5)
     s.gravity[1] = 0.0;
     s.dt = dt;
     return s;
+}
+
+/// The record tests' bed: 120 small and 40 large particles packed in [0, 0.03] x [0, 0.04] m,
+/// seed 42, settled for 2 ms.
+inline BedRecipe smallBedRecipe()
+{
+    BedRecipe r;
+    r.countPerClass = {120, 40};
+    r.region = {0.0, 0.03, 0.0, 0.04};
+    r.seed = 42;
+    r.settleTime = 0.002;
+    return r;
+}
+
+/// A file name in the test's temporary directory.
+inline std::string tempPath(const std::string& name) { return testing::TempDir() + name; }
+
+/// The message of the dem::Error that `call` throws ("" if none).
+template <class Call> std::string errorOf(Call&& call)
+{
+    try {
+        call();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
 }
 
 /// Head-on contact of the linear spring-dashpot with its normal force clamped at zero,

@@ -22,7 +22,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <functional>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -66,11 +65,7 @@ void writeAll(const std::string& path, const std::string& bytes)
 std::string savedBed(int dimension, const std::string& path)
 {
     Simulation sim(settingsOf(dimension));
-    BedRecipe r;
-    r.countPerClass = {120, 40};
-    r.region = {0.0, 0.03, 0.0, 0.04};
-    r.seed = 42;
-    r.settleTime = 0.002;
+    const BedRecipe r = smallBedRecipe();
     sim.packBed(r);
     sim.advance(0.0005);
     sim.save(path);
@@ -230,16 +225,6 @@ std::string olderSlab(const std::string& b, std::uint32_t version, std::string& 
     return old;
 }
 
-std::string errorOf(const std::function<void()>& f)
-{
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
-
 bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
 } // namespace
@@ -388,11 +373,7 @@ TEST(StateConversion, PreviousVersionContinuesWithTheSameBits)
         const std::uint32_t previous = dimension == 2 ? discStateVersion - 1 : slabStateVersion - 1;
         const std::string path = fileName("continued" + std::to_string(dimension));
         Simulation run(settingsOf(dimension));
-        BedRecipe r;
-        r.countPerClass = {120, 40};
-        r.region = {0.0, 0.03, 0.0, 0.04};
-        r.seed = 42;
-        r.settleTime = 0.002;
+        const BedRecipe r = smallBedRecipe();
         run.packBed(r);
         run.advance(0.0005);
         run.setRunRecord("dragModel Beetstra\n");

@@ -54,7 +54,7 @@ Foam::gasProperties::gasProperties(const objectRegistry& obr)
     checkKnownEntries
     (
         *this, entries(), "constant/gasProperties",
-        settingsEntries(objectPath(), obr.time()),
+        settingsEntries(obr.time()),
         "and the entries of the settings files that the case's"
         " dictionaries #include"
     );

@@ -33,7 +33,7 @@ void Foam::particleChecks::entries(const Time& time) const
     const string where("constant/particleProperties");
 
     // The coefficients of every drag model may stand at the top level
-    wordHashSet alsoAllowed(settingsEntries(dict_.objectPath(), time));
+    wordHashSet alsoAllowed(settingsEntries(time));
     for (const word& model : dragModel::dictionaryConstructorTablePtr_->toc())
     {
         alsoAllowed.insert(model + "Coeffs");
