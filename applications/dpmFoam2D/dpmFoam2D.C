@@ -91,6 +91,7 @@ int main(int argc, char *argv[])
     caseChecks::serialRun(args.executable());    // threads, not MPI
     const caseLock lock(args.path(), args.executable());  // one run a case
     caseChecks::dictionaryFiles(args.path());    // before OpenFOAM parses them
+    caseChecks::timeControls(args.path());       // before Time divides by them
     #include "setAsideIncompleteTimes.H"
     #include "createTime.H"
     Sout.precision(8);      // a readable log; fields keep writePrecision
@@ -107,10 +108,7 @@ int main(int argc, char *argv[])
         particles.write();
         voidage.write();
     }
-    if (!isFile(runTime.path()/"particles"/runTime.timeName() + ".h5"))
-    {
-        particles.writeStartParticles(U);
-    }
+    particles.writeStartParticles(U);
 
     solverTimers timers(runTime);
 

@@ -8,7 +8,8 @@
 # a holder killed by SIGKILL leaves no stale lock: the next start continues
 # from its last complete time. A bed that two cases share, outside both,
 # is locked while a solver packs it: the second case's solver is refused
-# naming the first.
+# naming the first. A lock path that is a link, a FIFO or a directory is
+# refused, and nothing is written through a link.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 
@@ -91,4 +92,39 @@ grep -qE "the directory \"$workDir/sharedBed\" is in use by dpmFoam2D \(pid $pac
 echo "ok   a shared bed being packed is refused to a second case: $(grep -m1 "is in use" caseB/log.second | cut -c1-160)"
 kill -9 $packer; wait $packer 2>/dev/null
 trap - EXIT
-pass "a second solver or packer in a running case is refused naming the holder; kill -9 leaves no stale lock; a shared bed is locked while packed"
+# A lock path that is a link (to a file outside the case) or not a regular
+# file is refused by the solver and the packer, and nothing is written
+# through it: the link's target keeps its bytes
+cd "$workDir" || fail "cd"
+makeCase linked
+printf 'not the lock\n' > victim
+cp victim victim.before
+ln -s ../victim linked/.dpmLock
+notRegular()
+{
+    local what="$1" app="$2"; shift 2
+    (cd linked && timeout 30 "$app" "$@" > log.$app 2>&1)
+    local status=$?
+    [ "$status" = 1 ] || { tail -5 linked/log.$app; fail "$app with a lock that is $what: exit $status, not 1"; }
+    grep -qE "^The lock file \"$workDir/linked/.dpmLock\" is $what; a lock must be a regular file" linked/log.$app \
+        || { tail -8 linked/log.$app; fail "$app: no message naming the lock that is $what"; }
+    cmp -s victim victim.before || fail "$app wrote through the lock link into the file it names"
+    echo "ok   $app refused a lock that is $what: $(grep -m1 "The lock file" linked/log.$app | cut -c1-140)"
+}
+notRegular "a symbolic link" dpmFoam2D
+notRegular "a symbolic link" dpmPackBed
+rm linked/.dpmLock && mkfifo linked/.dpmLock
+notRegular "not a regular file" dpmFoam2D
+rm linked/.dpmLock && mkdir linked/.dpmLock
+notRegular "not a regular file" dpmPackBed
+rmdir linked/.dpmLock
+# The same for a shared bed's directory outside the case
+mkdir -p linkedBed && ln -s ../victim linkedBed/.dpmLock
+setEntry linked/constant/particleProperties initialBed/file "\"$workDir/linkedBed/bed.state\""
+(cd linked && timeout 30 dpmFoam2D > log.bed 2>&1)
+grep -qE "The lock file \"$workDir/linkedBed/.dpmLock\" is a symbolic link" linked/log.bed \
+    || { tail -8 linked/log.bed; fail "the shared bed's lock link was not refused"; }
+cmp -s victim victim.before || fail "the packer wrote through the shared bed's lock link"
+echo "ok   a shared bed's lock link is refused"
+
+pass "a second solver or packer in a running case is refused naming the holder; kill -9 leaves no stale lock; a shared bed is locked while packed; a lock that is a link or not a regular file is refused and nothing is written through it"

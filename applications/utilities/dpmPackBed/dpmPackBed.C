@@ -99,6 +99,7 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     const caseLock lock(args.path(), args.executable());
     caseChecks::dictionaryFiles(args.path());    // before OpenFOAM parses them
+    caseChecks::timeControls(args.path());       // before Time divides by them
     #include "createTime.H"
     Sout.precision(8);
     #include "createMesh.H"
@@ -110,10 +111,19 @@ int main(int argc, char *argv[])
         "particles", mesh, gas, g.value(), dpmCloud::startMode::pack
     );
 
+    if (args.found("output"))
+    {
+        caseChecks::fileNameCharacters(args["output"], "Option -output");
+    }
+
     // Where to save: -output, else initialBed/file, else constant/
     const dictionary& bed =
         mesh.lookupObject<IOdictionary>("particleProperties")
        .subDict("initialBed");
+    caseChecks::fileNameEntry
+    (
+        bed, "file", "Entry 'file' of initialBed in " + bed.topDict().name()
+    );
     const fileName output
     (
         args.found("output")

@@ -215,6 +215,52 @@ void Foam::caseChecks::serialRun(const word& application)
 }
 
 
+void Foam::caseChecks::fileNameCharacters
+(
+    const std::string& path,
+    const std::string& what
+)
+{
+    for (size_t i = 0; i < path.size(); ++i)
+    {
+        if (!fileName::valid(path[i]))
+        {
+            const char c = path[i];
+            const std::string found =
+                c == ' ' ? "a space" : c == '\t' ? "a tab"
+              : c == '\n' ? "a newline" : c == '"' ? "a double quote"
+              : c == '\'' ? "a single quote" : "a white-space character";
+            FatalErrorInFunction
+                << what.c_str() << " \"" << path.c_str() << "\" has "
+                << found.c_str() << " (character " << label(i + 1)
+                << "); OpenFOAM's file names allow no white space (spaces,"
+                << " tabs, newlines) and no quotes (' \"): rename the"
+                << " directory or choose a path without them"
+                << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::caseChecks::fileNameEntry
+(
+    const dictionary& dict,
+    const word& key,
+    const std::string& what
+)
+{
+    const entry* e = dict.findEntry(key, keyType::LITERAL);
+    if (e && e->isStream())
+    {
+        const token path(e->stream());
+        if (path.isStringType())
+        {
+            fileNameCharacters(path.stringToken(), what);
+        }
+    }
+}
+
+
 void Foam::caseChecks::caseNameCharacters(int argc, char* argv[])
 {
     std::string path;
@@ -231,26 +277,9 @@ void Foam::caseChecks::caseNameCharacters(int argc, char* argv[])
             path = (!dir.empty() && dir[0] == '/') ? dir : path + "/" + dir;
         }
     }
-    for (size_t i = 0; i < path.size(); ++i)
-    {
-        if (!fileName::valid(path[i]))
-        {
-            const char c = path[i];
-            const std::string what =
-                c == ' ' ? "a space" : c == '\t' ? "a tab"
-              : c == '\n' ? "a newline" : c == '"' ? "a double quote"
-              : c == '\'' ? "a single quote" : "a white-space character";
-            std::string application(argv[0]);
-            application.erase(0, application.rfind('/') + 1);
-            FatalErrorInFunction
-                << application.c_str() << ": the case path \"" << path.c_str()
-                << "\" has " << what.c_str() << " (character " << label(i + 1)
-                << "); OpenFOAM's file names allow no white space (spaces,"
-                << " tabs, newlines) and no quotes (' \"): rename the"
-                << " directory or move the case to a path without them"
-                << exit(FatalError);
-        }
-    }
+    std::string application(argv[0]);
+    application.erase(0, application.rfind('/') + 1);
+    fileNameCharacters(path, application + ": the case path");
 }
 
 

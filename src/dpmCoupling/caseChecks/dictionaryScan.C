@@ -387,7 +387,8 @@ public:
 
     void scanCase()
     {
-        for (const word dir : {"system", "constant"})
+        // 0/: the initial fields, the one time directory a user edits
+        for (const word dir : {"system", "constant", "0"})
         {
             for (const fileName& f : readDir(casePath_/dir, fileName::FILE, false))
             {

@@ -44,13 +44,22 @@ int Foam::caseLock::inheritedDescriptor() const
     (
         *end || fd < 0
      || ::fstat(int(fd), &inherited) != 0
-     || ::stat(file_.c_str(), &own) != 0
+     || ::lstat(file_.c_str(), &own) != 0
      || inherited.st_dev != own.st_dev || inherited.st_ino != own.st_ino
     )
     {
         return -1;      // not this directory's lock: take one of our own
     }
     return int(fd);
+}
+
+
+void Foam::caseLock::refuseNotRegular(const char* what) const
+{
+    FatalErrorInFunction
+        << "The lock file " << file_ << " is " << what << "; a lock must be"
+        << " a regular file that the run makes itself (one run a directory):"
+        << " remove it and start again" << exit(FatalError);
 }
 
 
@@ -80,8 +89,22 @@ Foam::caseLock::caseLock
     if (fd_ < 0)
     {
         // Read-only: a file open for writing would keep its file system
-        // from being remounted read-only (flock needs no write access)
-        fd_ = ::open(file_.c_str(), O_RDONLY | O_CREAT | O_CLOEXEC, 0644);
+        // from being remounted read-only (flock needs no write access).
+        // Never through a link: the holder line would be written into
+        // whatever file the link names
+        fd_ = ::open
+        (
+            file_.c_str(),
+            O_RDONLY | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK,
+            0644
+        );
+        if (fd_ < 0 && (errno == ELOOP || errno == EISDIR))
+        {
+            refuseNotRegular
+            (
+                errno == ELOOP ? "a symbolic link" : "not a regular file"
+            );
+        }
     }
     if (fd_ < 0 && optional)
     {
@@ -92,6 +115,11 @@ Foam::caseLock::caseLock
         FatalErrorInFunction
             << "Cannot make the lock file " << file_ << ": "
             << std::strerror(errno) << exit(FatalError);
+    }
+    struct stat opened;
+    if (::fstat(fd_, &opened) != 0 || !S_ISREG(opened.st_mode))
+    {
+        refuseNotRegular("not a regular file");
     }
 
     // A few tries over 0.2 s: a tool that only looks whether the lock is
@@ -129,9 +157,17 @@ Foam::caseLock::caseLock
     const std::string line =
         std::string(application) + " (pid " + std::to_string(::getpid())
       + " on " + hostName() + ", started " + started + ")\n";
-    const int out = ::open(file_.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    // Written through a descriptor of the very file locked (the name may
+    // have been replaced since), truncated only once that is known
+    const int out =
+        ::open(file_.c_str(), O_WRONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+    struct stat held, target;
+    const bool sameFile =
+        out >= 0 && ::fstat(out, &target) == 0 && ::fstat(fd_, &held) == 0
+     && target.st_dev == held.st_dev && target.st_ino == held.st_ino;
     const bool written =
-        out >= 0 && ::write(out, line.data(), line.size()) == ssize_t(line.size());
+        sameFile && ::ftruncate(out, 0) == 0
+     && ::pwrite(out, line.data(), line.size(), 0) == ssize_t(line.size());
     if (out >= 0) ::close(out);     // the lock stays with fd_
     if (!written)
     {

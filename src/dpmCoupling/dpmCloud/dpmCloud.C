@@ -72,6 +72,7 @@ void Foam::dpmCloud::initialise(const startMode mode)
         if (mode == startMode::run)
         {
             bed_.checkRestart(restart);
+            engine_.checkRestartOrigin(restart, mesh_.time(), gasSpeedSum());
         }
         Info<< "Particles: " << size() << " read from " << restart << endl;
         return;

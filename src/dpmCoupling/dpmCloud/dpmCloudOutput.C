@@ -44,7 +44,11 @@ void Foam::dpmCloud::writeStartParticles(const volVectorField& U)
     const Time& time = mesh_.time();
     const scalar t = time.value();
     const scalar k = std::round(t/writeInterval_);
-    if (mag(t - k*writeInterval_) >= 0.5*time.deltaTValue())
+    if
+    (
+        mag(t - k*writeInterval_) >= 0.5*time.deltaTValue()
+     || writer_->hasGasFields(time.timeName())
+    )
     {
         return;
     }
@@ -64,6 +68,23 @@ void Foam::dpmCloud::writeStartParticles(const volVectorField& U)
         grid_.interpolate(x[i], y[i], eps, Uc, voidageP[i], gasVelocityP[i]);
     }
     writer_->write(engine_.dem(), voidageP, gasVelocityP, t, time.timeName());
+}
+
+
+Foam::scalar Foam::dpmCloud::gasSpeedSum() const
+{
+    if (!mesh_.foundObject<volVectorField>("U"))
+    {
+        return -1;      // no gas (a bed being packed)
+    }
+    const vectorField& U =
+        mesh_.lookupObject<volVectorField>("U").primitiveField();
+    scalar sum = 0;
+    forAll(U, celli)
+    {
+        sum += mag(U[celli]);
+    }
+    return sum;
 }
 
 
@@ -113,7 +134,7 @@ bool Foam::dpmCloud::writeObject
     const bool
 ) const
 {
-    engine_.save(engine_.stateFile(mesh_.time(), mesh_.time().timeName()));
+    engine_.saveTime(mesh_.time(), gasSpeedSum());
     return true;
 }
 

@@ -12,6 +12,7 @@ License
 #include "gasProperties.H"
 #include "positiveEntry.H"
 #include "knownEntries.H"
+#include "particlePropertiesEntries.H"
 #include "Time.H"
 #include "OStringStream.H"
 
@@ -56,7 +57,17 @@ Foam::gasProperties::gasProperties(const objectRegistry& obr)
         *this, entries(), "constant/gasProperties",
         settingsEntries(obr.time()),
         "and the entries of the settings files that the case's"
-        " dictionaries #include"
+        " dictionaries #include",
+        {
+            {
+                "constant/particleProperties (its top level)",
+                particlePropertiesEntries::top()
+            },
+            {
+                "constant/particleProperties/contact",
+                particlePropertiesEntries::contact()
+            }
+        }
     );
 
     const bool byVelocity = found("U0");

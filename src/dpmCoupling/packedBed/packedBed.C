@@ -14,6 +14,7 @@ License
 #include "packedBed.H"
 #include "mathematicalConstants.H"
 #include "caseLock.H"
+#include "caseChecks.H"
 
 #include <cerrno>
 
@@ -58,7 +59,15 @@ Foam::packedBed::packedBed
 Foam::fileName Foam::packedBed::bedFile() const
 {
     const dictionary& bed = dict_.subDict("initialBed");
-    return bed.found("file") ? bed.get<fileName>("file").expand() : fileName();
+    if (!bed.found("file"))
+    {
+        return fileName();
+    }
+    caseChecks::fileNameEntry
+    (
+        bed, "file", "Entry 'file' of initialBed in " + dict_.name()
+    );
+    return bed.get<fileName>("file").expand();
 }
 
 

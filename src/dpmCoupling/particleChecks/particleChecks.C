@@ -30,7 +30,13 @@ Foam::label Foam::particleChecks::smallestClass(const dem::Settings& settings)
 
 void Foam::particleChecks::entries(const Time& time) const
 {
+    namespace names = particlePropertiesEntries;
     const string where("constant/particleProperties");
+    const entryHome top{where + " (its top level)", names::top()};
+    const entryHome sizeClass{where + "/classes/<class>", names::sizeClass()};
+    const entryHome contact{where + "/contact", names::contact()};
+    const entryHome initialBed{where + "/initialBed", names::initialBed()};
+    const entryHome gas{"constant/gasProperties", gasProperties::entries()};
 
     // The coefficients of every drag model may stand at the top level
     wordHashSet alsoAllowed(settingsEntries(time));
@@ -40,9 +46,10 @@ void Foam::particleChecks::entries(const Time& time) const
     }
     checkKnownEntries
     (
-        dict_, particlePropertiesEntries::top(), where, alsoAllowed,
+        dict_, names::top(), where, alsoAllowed,
         "and <dragModel>Coeffs and the entries of the settings files"
-        " that the case's dictionaries #include"
+        " that the case's dictionaries #include",
+        {contact, initialBed, sizeClass, gas}
     );
 
     for (const entry& e : dict_.subDict("classes"))
@@ -51,20 +58,20 @@ void Foam::particleChecks::entries(const Time& time) const
         {
             checkKnownEntries
             (
-                e.dict(), particlePropertiesEntries::sizeClass(),
-                where + "/classes/" + e.keyword()
+                e.dict(), names::sizeClass(), where + "/classes/" + e.keyword(),
+                wordHashSet(), string(), {top, contact, initialBed}
             );
         }
     }
     checkKnownEntries
     (
-        dict_.subOrEmptyDict("contact"), particlePropertiesEntries::contact(),
-        where + "/contact"
+        dict_.subOrEmptyDict("contact"), names::contact(), where + "/contact",
+        wordHashSet(), string(), {top, sizeClass, initialBed, gas}
     );
     checkKnownEntries
     (
-        dict_.subOrEmptyDict("initialBed"),
-        particlePropertiesEntries::initialBed(), where + "/initialBed"
+        dict_.subOrEmptyDict("initialBed"), names::initialBed(),
+        where + "/initialBed", wordHashSet(), string(), {top, contact, sizeClass}
     );
 }
 

@@ -13,6 +13,55 @@ License
 #include "positiveEntry.H"
 #include "mathematicalConstants.H"
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- Warning naming the Hertz-Mindlin law's entries given to the linear law,
+//  which reads none of them: said, not ignored silently
+void noteHertzEntries
+(
+    const fileName& file,
+    const dictionary& classes,
+    const dictionary& contact
+)
+{
+    std::string unused;
+    const auto add = [&unused](const std::string& entry)
+    {
+        unused += (unused.empty() ? "" : ", ") + entry;
+    };
+    for (const char* key : {"wallYoungsModulus", "wallPoissonRatio", "impactSpeed"})
+    {
+        if (contact.found(key, keyType::LITERAL)) add("contact/" + word(key));
+    }
+    for (const word& name : classes.sortedToc())
+    {
+        const dictionary* c = classes.findDict(name);
+        for (const char* key : {"youngsModulus", "poissonRatio"})
+        {
+            if (c && c->found(key, keyType::LITERAL))
+            {
+                add("classes/" + name + "/" + word(key));
+            }
+        }
+    }
+    if (!unused.empty())
+    {
+        WarningInFunction
+            << file << ": " << unused.c_str()
+            << " not used: the contactLaw is linear (kn, kt and restitution"
+            << " set the contact); select contactLaw HertzMindlin for them,"
+            << " or remove the entries" << endl;
+    }
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::particleEngine::particleEngine
@@ -77,6 +126,10 @@ dem::Settings Foam::particleEngine::settings
             << " is not allowed; allowed: linear (the paper's, default) or"
             << " HertzMindlin (docs/model.md, \"The Hertz-Mindlin law\")"
             << exit(FatalIOError);
+    }
+    if (cs.law == dem::ContactLawType::linear)
+    {
+        noteHertzEntries(dict_.name(), classes, contact);
     }
     cs.wallYoungsModulus =
         contact.lookupOrDefault<scalar>("wallYoungsModulus", cs.wallYoungsModulus);

@@ -20,6 +20,9 @@ License
 #include "Time.H"
 #include "faultInjection.H"
 
+#include <cmath>
+#include <cstdio>
+
 #include <sstream>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -74,11 +77,38 @@ bool Foam::particleEngine::hasStates(const Time& time) const
 
 void Foam::particleEngine::save(const fileName& file) const
 {
+    saveWithRecord(file, runRecord_);
+}
+
+
+void Foam::particleEngine::saveTime
+(
+    const Time& time,
+    const scalar gasSpeedSum
+) const
+{
+    std::string record = runRecord_ + "time " + time.timeName() + "\n";
+    if (gasSpeedSum >= 0)
+    {
+        char gas[32];
+        std::snprintf(gas, sizeof(gas), "%.17g", gasSpeedSum);
+        record += std::string("gasSpeedSum ") + gas + "\n";
+    }
+    saveWithRecord(stateFile(time, time.timeName()), record);
+}
+
+
+void Foam::particleEngine::saveWithRecord
+(
+    const fileName& file,
+    const std::string& record
+) const
+{
     faultInjection::at("stateWrite");
     // The write's own error (file, OS reason), not the settings' file
     try
     {
-        dem_->setRunRecord(runRecord_);
+        dem_->setRunRecord(record);
         dem_->save(file);
     }
     catch (const dem::Error& err)
@@ -160,6 +190,58 @@ void Foam::particleEngine::checkRestartModels(const fileName& restart) const
         << " 'allowModelChange yes;' in " << dict_.name() << " to continue it"
         << " with the change on purpose, or start anew from time 0"
         << " (startTime 0 in system/controlDict)" << exit(FatalIOError);
+}
+
+
+void Foam::particleEngine::checkRestartOrigin
+(
+    const fileName& restart,
+    const Time& time,
+    const scalar gasSpeedSum
+) const
+{
+    std::string writtenAt, gas;
+    for (const auto& [name, value] : recordEntries(dem_->runRecord()))
+    {
+        if (name == "time") writtenAt = value;
+        if (name == "gasSpeedSum") gas = value;
+    }
+    scalar t;
+    if
+    (
+        !writtenAt.empty() && readScalar(writtenAt, t)
+     && mag(t - time.value()) > 1e-9*max(1, mag(time.value()))
+    )
+    {
+        FatalErrorInFunction
+            << "Cannot restart from " << restart << ": the state was written"
+            << " at time " << writtenAt.c_str() << ", not at "
+            << time.timeName() << " (the time directory it is in): a state"
+            << " copied from another time" << nl
+            << "    Restart from the time it belongs to (its whole directory),"
+            << " or remove " << time.timePath() << exit(FatalError);
+    }
+
+    // The gas written beside it: U as read back, to the digits written
+    // (writePrecision; exact in binary)
+    scalar saved;
+    const scalar tolerance =
+        10*std::pow(10.0, -scalar(IOstream::defaultPrecision()));
+    if
+    (
+        !gas.empty() && gasSpeedSum >= 0 && readScalar(gas, saved)
+     && mag(saved - gasSpeedSum) > tolerance*max(mag(saved), mag(gasSpeedSum))
+    )
+    {
+        FatalErrorInFunction
+            << "Cannot restart from " << restart << ": the state was written"
+            << " beside another gas than " << time.timePath()/"U" << " holds"
+            << " (sum of the cells' |U| " << saved << " then, "
+            << gasSpeedSum << " in the file): a state, or U, copied from"
+            << " another case or time" << nl
+            << "    Restart from a time directory as the run wrote it, or"
+            << " remove " << time.timePath() << exit(FatalError);
+    }
 }
 
 

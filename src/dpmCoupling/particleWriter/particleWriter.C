@@ -105,6 +105,24 @@ void writeWhole
     if (std::rename(partial.c_str(), file.c_str()) != 0) failed();
 }
 
+
+//- Whether the HDF5 file has a dataset of that name (false if unreadable)
+bool hasDataset(const Foam::fileName& file, const char* name)
+{
+    bool found = false;
+    H5E_BEGIN_TRY
+    {
+        const hid_t h5 = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+        if (h5 >= 0)
+        {
+            found = H5Lexists(h5, name, H5P_DEFAULT) > 0;
+            H5Fclose(h5);
+        }
+    }
+    H5E_END_TRY
+    return found;
+}
+
 } // End anonymous namespace
 
 
@@ -118,8 +136,7 @@ Foam::particleWriter::particleWriter
 )
 :
     dir_(caseDir/"particles"),
-    depth_(depth),
-    gasFields_(false)
+    depth_(depth)
 {
     mkDir(dir_);
 
@@ -132,14 +149,14 @@ Foam::particleWriter::particleWriter
         scalar t;
         if (readScalar(name, t) && t <= startTime*(1 + 1e-12) + 1e-12)
         {
-            times_.append(Tuple2<scalar, word>(t, name));
+            times_.push_back({t, name, hasDataset(dir_/f, "voidage")});
         }
     }
     std::sort
     (
         times_.begin(), times_.end(),
-        [](const Tuple2<scalar, word>& a, const Tuple2<scalar, word>& b)
-        { return a.first() < b.first(); }
+        [](const indexedFile& a, const indexedFile& b)
+        { return a.time < b.time; }
     );
 }
 
@@ -217,8 +234,9 @@ void Foam::particleWriter::write
     ok = ok && writeDataset(h5, "diameter", H5T_NATIVE_FLOAT, diameter, n, 1);
     ok = ok && writeDataset(h5, "class", H5T_NATIVE_SCHAR, classIndex, n, 1);
     ok = ok && writeDataset(h5, "id", H5T_NATIVE_INT, id, n, 1);
-    gasFields_ = voidage.size() == label(n) && gasVelocity.size() == label(n);
-    if (ok && gasFields_)
+    const bool gasFields =
+        voidage.size() == label(n) && gasVelocity.size() == label(n);
+    if (ok && gasFields)
     {
         std::vector<float> eps(n), u(3*n);
         for (hsize_t i = 0; i < n; ++i)
@@ -256,12 +274,22 @@ void Foam::particleWriter::write
     writeWhole(final, image.data(), image.size(), "particleWrite");
 
     // Replace a later entry of an earlier run; keep the list in time order
-    while (times_.size() && times_.last().first() >= t*(1 - 1e-12) - 1e-12)
+    while (times_.size() && times_.back().time >= t*(1 - 1e-12) - 1e-12)
     {
-        times_.remove();
+        times_.pop_back();
     }
-    times_.append(Tuple2<scalar, word>(t, timeName));
+    times_.push_back({t, timeName, gasFields});
     writeIndex(particles);
+}
+
+
+bool Foam::particleWriter::hasGasFields(const word& timeName) const
+{
+    for (const indexedFile& f : times_)
+    {
+        if (f.name == timeName) return f.gasFields;
+    }
+    return false;
 }
 
 
@@ -299,9 +327,9 @@ void Foam::particleWriter::writeIndex(const dem::Simulation& particles) const
             };
 
         // The time as its name: a restarted run lists the same values
-        for (const Tuple2<scalar, word>& t : times_)
+        for (const indexedFile& f : times_)
         {
-            const word& h5 = t.second();
+            const word& h5 = f.name;
             os  << "  <Grid Name=\"particles_" << h5
                 << "\" GridType=\"Uniform\">\n"
                 << "   <Time Value=\"" << h5 << "\"/>\n"
@@ -319,7 +347,7 @@ void Foam::particleWriter::writeIndex(const dem::Simulation& particles) const
             attribute(h5, "diameter", "Node", "Scalar", "Float", 4, 1);
             attribute(h5, "class", "Node", "Scalar", "Char", 1, 1);
             attribute(h5, "id", "Node", "Scalar", "Int", 4, 1);
-            if (gasFields_)
+            if (f.gasFields)
             {
                 attribute(h5, "voidage", "Node", "Scalar", "Float", 4, 1);
                 attribute(h5, "gasVelocity", "Node", "Vector", "Float", 4, 3);

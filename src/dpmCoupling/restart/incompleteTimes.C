@@ -15,20 +15,58 @@ License
 #include "IFstream.H"
 #include "OSspecific.H"
 
+#include <algorithm>
+#include <fstream>
+#include <string>
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
 {
 
-//- The missing files of a time, in words: "Ustar, Fp"
-std::string missingText(const Foam::fileName& timeDir)
+//- Does a field file written by OpenFOAM end with the divider its writer
+//  puts last (IOobject::writeEndDivider)? A compressed file is not looked
+//  into. A file cut short (files lost or damaged after the run) lacks it.
+bool endsWithDivider(const Foam::fileName& file)
 {
-    std::string text;
+    std::ifstream is(file, std::ios::binary);
+    if (!is)
+    {
+        return true;    // a compressed or missing file: not judged here
+    }
+    is.seekg(0, std::ios::end);
+    const std::streamoff size = is.tellg();
+    const std::streamoff n = std::min<std::streamoff>(size, 256);
+    std::string tail(size_t(n), '\0');
+    is.seekg(size - n);
+    is.read(&tail[0], n);
+    const auto end = tail.find_last_not_of(" \t\r\n");
+    if (end == std::string::npos)
+    {
+        return false;
+    }
+    const auto line = tail.rfind('\n', end);
+    const std::string last =
+        tail.substr(line == std::string::npos ? 0 : line + 1, end - line);
+    return last.size() > 6 && last.compare(0, 4, "// *") == 0
+        && last.compare(last.size() - 2, 2, "//") == 0;
+}
+
+
+//- What a time lacks, in words: "no Ustar, Fp; U cut short"
+std::string incompleteText(const Foam::fileName& timeDir)
+{
+    std::string missing, cut;
     for (const Foam::fileName& f : Foam::missingRestartFiles(timeDir))
     {
-        text += (text.empty() ? "" : ", ") + f;
+        missing += (missing.empty() ? "no " : ", ") + f;
     }
-    return text;
+    for (const Foam::fileName& f : Foam::cutShortRestartFiles(timeDir))
+    {
+        cut += (cut.empty() ? "" : ", ") + f;
+    }
+    if (!cut.empty()) cut += " cut short";
+    return missing + (missing.empty() || cut.empty() ? "" : "; ") + cut;
 }
 
 } // End anonymous namespace
@@ -67,9 +105,24 @@ Foam::fileNameList Foam::missingRestartFiles(const fileName& timeDir)
 }
 
 
+Foam::fileNameList Foam::cutShortRestartFiles(const fileName& timeDir)
+{
+    fileNameList cut;
+    for (const fileName f : {"U", "p_rgh", "Kc", "Fp", "Ustar"})
+    {
+        if (isFile(timeDir/f, false) && !endsWithDivider(timeDir/f))
+        {
+            cut.append(f);
+        }
+    }
+    return cut;
+}
+
+
 bool Foam::completeTime(const fileName& timeDir)
 {
-    return missingRestartFiles(timeDir).empty();
+    return missingRestartFiles(timeDir).empty()
+        && cutShortRestartFiles(timeDir).empty();
 }
 
 
@@ -102,9 +155,10 @@ Foam::label Foam::setAsideIncompleteTimes(const argList& args)
                 FatalErrorInFunction
                     << "Start time " << t.name() << " (startTime in "
                     << controlDictFile << ") is incomplete: "
-                    << casePath/t.name() << " has no "
-                    << missingText(casePath/t.name()).c_str()
-                    << " (a run killed while writing it, or files lost)" << nl
+                    << casePath/t.name() << " has "
+                    << incompleteText(casePath/t.name()).c_str()
+                    << " (a run killed while writing it, or files lost or"
+                    << " damaged)" << nl
                     << "    Remove " << casePath/t.name() << " or start from"
                     << " an earlier time (startFrom latestTime continues"
                     << " from the last complete one)" << exit(FatalError);
@@ -126,7 +180,7 @@ Foam::label Foam::setAsideIncompleteTimes(const argList& args)
         {
             break;
         }
-        const std::string missing = missingText(dir);
+        const std::string missing = incompleteText(dir);
         fileName aside = dir + ".incomplete";
         for (label k = 2; exists(aside); ++k)
         {
@@ -141,7 +195,7 @@ Foam::label Foam::setAsideIncompleteTimes(const argList& args)
                 << "    Remove " << dir << " and run again"
                 << exit(FatalError);
         }
-        Info<< "Restart: time " << t.name() << " is incomplete (no "
+        Info<< "Restart: time " << t.name() << " is incomplete ("
             << missing.c_str() << ": a run killed while writing it,"
             << " or files lost); set aside as " << aside.name() << endl;
         ++nSetAside;
