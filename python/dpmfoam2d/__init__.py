@@ -14,6 +14,8 @@ Modules:
     fields          gas fields (internal fields of volScalar/VectorFields,
                     cell centres and volumes, time directories)
     bed_statistics  bubbles, bed height and particle motion (dpmBedStatistics)
+    rise_time       when the particles of a class reach the bed's surface
+                    (dpmRiseTime)
     pictures        snapshots, movies, M(t) plots, ParaView (dpmSnapshot,
                     dpmMovie, dpmPlotMixing, dpmPictures, dpmParaView)
     study           the study runner and its results (dpmStudy)

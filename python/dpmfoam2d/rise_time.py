@@ -1,0 +1,163 @@
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""When the particles of one class first reach the bed's surface: the rise
+time of light intruders in a bed of heavier particles (density segregation,
+as NETL's small segregating bed measures it: LaMarche et al. 2022).
+
+  dpmRiseTime <case> [-class <name or index>] [-fraction 0.99 ...]
+              [-start <s>]
+
+The bed's surface at a time: the height below which the fraction q
+(-fraction, default 0.99) of the centres of the other particles (the bed)
+lie. A particle of the class has risen at the first particle file in which
+its centre is at or above that height; its rise time is that file's time
+less the start (-start, default the first particle file's time: the gas's
+onset in a run that starts with it). The time resolution is the particle
+files' interval. Several fractions bracket the surface's definition.
+Default class: the one with the fewest particles (the intruders).
+
+Writes postProcessing/riseTime/0/
+  riseTime.dat   one row per particle of the class: id, then its rise time
+                 for each fraction (nan: it did not rise within the run)
+  riseOrder.dat  one row per rank k: the k-th rise time of the class
+                 (the 1st, 2nd ... to emerge), for each fraction
+"""
+
+import argparse
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+from . import particles as pio
+
+OUT = os.path.join("postProcessing", "riseTime", "0")
+
+
+def class_names(case):
+    """The class names of constant/particleProperties in their order (the
+    particle files' class indices), or [] when foamDictionary cannot say."""
+    path = os.path.join(case, "constant", "particleProperties")
+    try:
+        out = subprocess.run(["foamDictionary", "-entry", "classes", "-keywords", path],
+                             capture_output=True, text=True, check=True).stdout
+    except (OSError, subprocess.CalledProcessError):
+        return []
+    return out.split()
+
+
+def surface_heights(y, in_bed, fractions):
+    """The heights below which each fraction of the bed's centres lie."""
+    return np.quantile(y[in_bed], fractions) if in_bed.any() else np.full(len(fractions), np.nan)
+
+
+def rise_times(case, cls, fractions, start=None):
+    """(ids, times, start): the ids of class cls's particles (sorted) and
+    their rise times, an array [particle, fraction] (nan where not risen),
+    measured from start (default: the first particle file's time)."""
+    files = pio.list_times(case)
+    if not files:
+        raise ValueError("%s: no particle files <time>.h5 in %s" % (case, pio.particles_dir(case)))
+    t0 = files[0][0] if start is None else start
+    ids = times = None
+    for t, path in files:
+        if t < t0:
+            continue
+        p = pio.read_particles(path)
+        y, c, pid = p["position"][:, 1], p["class"], p["id"]
+        mine = c == cls
+        if ids is None:
+            ids = np.sort(pid[mine])
+            if not len(ids):
+                raise ValueError("%s: no particle of class %d" % (path, cls))
+            times = np.full((len(ids), len(fractions)), np.nan)
+        heights = surface_heights(y, ~mine, fractions)
+        rows = np.searchsorted(ids, pid[mine])
+        for k, h in enumerate(heights):
+            risen = (y[mine] >= h) & np.isnan(times[rows, k])
+            times[rows[risen], k] = t - t0
+    if ids is None:
+        raise ValueError("%s: no particle file at or after the start %g s" % (case, t0))
+    return ids, times, t0
+
+
+def write_table(path, comment, names, rows, formats):
+    tmp = "%s.tmp%d" % (path, os.getpid())
+    with open(tmp, "w") as f:
+        for line in comment:
+            f.write("# %s\n" % line)
+        f.write("# " + "\t".join("%-14s" % n for n in names).rstrip() + "\n")
+        for r in rows:
+            f.write("\t".join(fmt % v for fmt, v in zip(formats, r)).rstrip() + "\n")
+    os.replace(tmp, path)       # a killed command leaves the previous table
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(prog="dpmRiseTime", description=__doc__.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog=__doc__.split("\n\n", 1)[1])
+    ap.add_argument("case")
+    ap.add_argument("-class", dest="cls", help="the class (its name in particleProperties, "
+                    "or its index); default: the one with the fewest particles")
+    ap.add_argument("-fraction", type=float, nargs="+", default=[0.99],
+                    help="the bed's fraction below the surface, each in (0, 1) (default 0.99)")
+    ap.add_argument("-start", type=float, help="s from which rise times count (default: the "
+                    "first particle file's time)")
+    a = ap.parse_args(argv)
+
+    def refuse(text):
+        sys.exit("dpmRiseTime: " + text)
+
+    for q in a.fraction:
+        if not 0 < q < 1:
+            refuse("-fraction %g is outside (0, 1)" % q)
+    if a.start is not None and not math.isfinite(a.start):
+        refuse("-start %g is not a time" % a.start)
+    try:
+        pio.check_case(a.case)
+        files = pio.list_times(a.case)
+        if not files:
+            refuse("%s has no particle files <time>.h5 in particles/: run dpmFoam2D first" % a.case)
+        names = class_names(a.case)
+        if a.cls is None:
+            counts = np.bincount(pio.read_particles(files[0][1])["class"])
+            present = np.flatnonzero(counts)
+            cls = int(present[np.argmin(counts[present])])
+        elif a.cls.isdigit():
+            cls = int(a.cls)
+        elif a.cls in names:
+            cls = names.index(a.cls)
+        else:
+            refuse("-class %s: not a class of %s (classes: %s)"
+                   % (a.cls, os.path.join(a.case, "constant", "particleProperties"),
+                      " ".join(names) or "none found: give the index"))
+        ids, times, t0 = rise_times(a.case, cls, a.fraction, a.start)
+    except (ValueError, OSError) as e:
+        refuse(str(e))
+
+    label = names[cls] if cls < len(names) else "class %d" % cls
+    out = os.path.join(a.case, OUT)
+    os.makedirs(out, exist_ok=True)
+    columns = ["riseTime_q%g" % q for q in a.fraction]
+    comment = ["Rise time of %s (class %d): the first particle file with its centre at or "
+               "above the bed's surface, s after %g s" % (label, cls, t0),
+               "surface: the height below which the fraction q of the other particles' "
+               "centres lie; q = %s" % " ".join("%g" % q for q in a.fraction),
+               "resolution: the particle files' interval; nan: not risen within the run"]
+    write_table(os.path.join(out, "riseTime.dat"), comment, ["id"] + columns,
+                [[i] + list(r) for i, r in zip(ids, times)], ["%-14d"] + ["%-14.6g"] * len(columns))
+    order = np.sort(times, axis=0)      # nan last
+    write_table(os.path.join(out, "riseOrder.dat"), comment, ["rank"] + columns,
+                [[k + 1] + list(r) for k, r in enumerate(order)],
+                ["%-14d"] + ["%-14.6g"] * len(columns))
+    risen = int(np.isfinite(times[:, 0]).sum())
+    print("dpmRiseTime: %s: %d of %d risen (q %g), the first %s -> %s"
+          % (label, risen, len(ids), a.fraction[0],
+             "at %g s" % order[0, 0] if risen else "none", out))
+
+
+def command():
+    """bin/dpmRiseTime."""
+    main()
