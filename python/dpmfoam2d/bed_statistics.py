@@ -40,6 +40,7 @@ import numpy as np
 
 from . import fields as ff
 from . import particles as pio
+from .files import replacing
 
 CLASSES = ("Small", "Large")
 OUT = os.path.join("postProcessing", "bedStatistics", "0")
@@ -114,14 +115,13 @@ def particle_table(case, still, every):
 
 
 def write_table(path, comment, names, rows):
-    tmp = "%s.tmp%d" % (path, os.getpid())     # two writers never share it
-    with open(tmp, "w") as f:
+    # a new file renamed onto path: a killed run leaves the previous table
+    with replacing(path) as f:
         for line in comment:
             f.write("# %s\n" % line)
         f.write("# " + "\t".join("%-24s" % n for n in names).rstrip() + "\n")
         for r in rows:
             f.write("\t".join("%-24.17g" % v for v in r).rstrip() + "\n")
-    os.replace(tmp, path)      # a killed run leaves the previous table
 
 
 def main():

@@ -30,6 +30,7 @@ import numpy as np
 import h5py
 
 from .fields import TIME_NAME
+from .files import replacing
 
 PARTICLES_DIR = "particles"
 XDMF_NAME = "particles.xdmf"
@@ -200,6 +201,6 @@ def write_xdmf(case):
             '%s\n    </Grid>\n  </Domain>\n</Xdmf>\n'
             % "\n".join("  " + g.replace("\n", "\n  ") for g in grids))
     path = os.path.join(particles_dir(case), XDMF_NAME)
-    with open(path, "w") as f:
+    with replacing(path) as f:
         f.write(text)
     return path

@@ -10,6 +10,8 @@ import subprocess
 import tempfile
 import time
 
+from ..files import create_new
+
 HERE = os.path.dirname(os.path.realpath(__file__))
 RENDER = os.path.join(HERE, "render.py")
 
@@ -22,8 +24,11 @@ CLASS_NAMES = {0: "small", 1: "large"}
 def ensure_foam(case):
     """<case>/case.foam, the empty file ParaView's OpenFOAM reader opens."""
     path = os.path.join(case, "case.foam")
-    if not os.path.exists(path):
-        open(path, "a").close()
+    if not os.path.lexists(path):       # a dangling link is not followed
+        try:
+            create_new(path).close()
+        except FileExistsError:         # made meanwhile by another tool
+            pass
     return path
 
 

@@ -104,6 +104,7 @@ particleScale, e.g. slab5mm's twice Table 3's; shorter settling).
 """
 
 import argparse
+import errno
 import os
 import sys
 
@@ -111,6 +112,7 @@ from .. import PROJECT_DIR
 from . import definition as study_definition
 from . import results as study_results, slurm as study_slurm
 from .jobs import latest_complete_time, path_problem, running_in
+from .locks import LockError
 from .runner import Study, say
 from .variants import first_line_comment, list_variants
 
@@ -239,5 +241,14 @@ def main():
 
 
 def command():
-    """bin/dpmStudy."""
-    main()
+    """bin/dpmStudy: a file it cannot write, or a lock path that cannot be
+    one, ends it with the path named."""
+    try:
+        main()
+    except LockError as e:
+        sys.exit("dpmStudy: %s" % e)
+    except OSError as e:
+        if e.filename is None:
+            raise
+        hint = ": the study must be on a writable file system" if e.errno == errno.EROFS else ""
+        sys.exit("dpmStudy: %s: %s%s" % (e.filename, e.strerror, hint))

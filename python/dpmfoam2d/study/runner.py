@@ -4,6 +4,7 @@
 settings, variants, locks), run here (study.jobs) or submitted to Slurm
 (study.slurm). The command line and its usage: study.command_line."""
 
+import fcntl
 import os
 import re
 import shutil
@@ -13,7 +14,9 @@ from .. import BIN_DIR
 from . import definition as study_definition
 from . import cases as study_cases, jobs as study_jobs, slurm as study_slurm
 from .foam_edit import foam_remove, foam_set
-from .jobs import Job, latest_complete_time, lock_holder, running_in, take_lock
+from ..files import write_text
+from .jobs import Job, latest_complete_time, lock_holder, running_in
+from .locks import LockError, flock_holders, open_lock, take_lock
 from .variants import Variant
 
 
@@ -22,6 +25,11 @@ from .variants import Variant
 NOT_COPIED = re.compile(r"^([0-9][0-9.eE+-]*|[0-9.]+\.incomplete(\.[0-9]+)?|particles|"
                         r"postProcessing|images|log\..*|case\.foam|dynamicCode|\.dpmLock|"
                         r"polyMesh|packedBed.*|variants|studyDict)$")
+
+
+# The study's own lock: shared by its local runs, held alone by a -slurm
+# submission
+STUDY_LOCK = ".dpmStudy.lock"
 
 
 def say(*args):
@@ -36,6 +44,14 @@ def bed_name(w, seed=None, variant=None):
 def case_name(w, p, seed=None, variant=None):
     return "w%.2f_%gbar" % (w, p) + ("_" + variant if variant else "") + \
         ("" if seed is None else "_seed%d" % seed)
+
+
+def locked(directory):
+    """take_lock, its refusal of a lock path that cannot be one an exit."""
+    try:
+        return take_lock(directory)
+    except LockError as e:
+        sys.exit("dpmStudy: %s" % e)
 
 
 def copy_template(template, dest):
@@ -111,7 +127,7 @@ class Study:
                      "run again when it has finished" % (bed, pid))
         if not os.path.isdir(bed):
             copy_template(self.template, bed)
-        lock = take_lock(bed)
+        lock = locked(bed)
         if lock is None:
             sys.exit("dpmStudy: %s is being packed by %s: run again when it has finished"
                      % (bed, lock_holder(bed) or "another process"))
@@ -151,10 +167,10 @@ class Study:
             self.settings(case, w, p, seed)
             # before the variant: foamDictionary writes particleProperties
             # with its #includeIfPresent "packedBed" expanded as it is then
-            with open(os.path.join(case, "constant", "packedBed"), "w") as f:
-                f.write('// The bed of this mass fraction, packed once by dpmStudy\n'
-                        'file "$FOAM_CASE/../beds/%s/constant/packedBed.state";\n'
-                        % self.bed_of(w, seed))
+            write_text(os.path.join(case, "constant", "packedBed"),
+                       '// The bed of this mass fraction, packed once by dpmStudy\n'
+                       'file "$FOAM_CASE/../beds/%s/constant/packedBed.state";\n'
+                       % self.bed_of(w, seed))
             if self.variant:
                 self.apply_variant(case)
         else:
@@ -168,7 +184,7 @@ class Study:
                 say("%-16s skipped: process %d runs in it (another dpmStudy?)" % (name, pid))
                 return None
         # the case's lock while it is set up: no solver starts in it meanwhile
-        lock = take_lock(case)
+        lock = locked(case)
         if lock is None:
             say("%-16s skipped: %s holds its lock" % (name, lock_holder(case) or "another process"))
             return None
@@ -244,10 +260,7 @@ class Study:
         results follow the copy); a study made with another one is refused."""
         path = os.path.join(self.dir, study_definition.FILE_NAME)
         if not os.path.isfile(path):
-            tmp = "%s.tmp%d" % (path, os.getpid())
-            with open(tmp, "w") as f:
-                f.write(self.definition.text)
-            os.replace(tmp, path)
+            write_text(path, self.definition.text)
             return
         with open(path) as f:
             if f.read() != self.definition.text:
@@ -256,7 +269,32 @@ class Study:
                          "template's, or use another study directory"
                          % (path, self.definition.path, path))
 
+    def study_lock(self, exclusive):
+        """The study's lock (STUDY_LOCK), shared by its local runs, held
+        alone by a submission; None while the other kind holds it."""
+        try:
+            fd = open_lock(os.path.join(self.dir, STUDY_LOCK))
+        except LockError as e:
+            sys.exit("dpmStudy: %s" % e)
+        try:
+            fcntl.flock(fd, (fcntl.LOCK_EX if exclusive else fcntl.LOCK_SH) | fcntl.LOCK_NB)
+        except BlockingIOError:
+            os.close(fd)
+            return None
+        return fd
+
     def run(self):
+        os.makedirs(self.dir, exist_ok=True)
+        lock = self.study_lock(exclusive=False)
+        if lock is None:
+            sys.exit("dpmStudy: a -slurm submission of %s is under way (it holds %s): run "
+                     "again when it has ended" % (self.dir, os.path.join(self.dir, STUDY_LOCK)))
+        try:
+            self.run_locked()
+        finally:
+            os.close(lock)
+
+    def run_locked(self):
         bed_jobs, case_jobs, queued = self.prepare()
         if queued:
             sys.exit("dpmStudy: Slurm packs beds of this study (tasks %s): run again when "
@@ -264,25 +302,30 @@ class Study:
         jobs = bed_jobs + case_jobs
         if not jobs:
             return
-        lock = os.path.join(self.dir, ".dpmStudy.running")
-        os.makedirs(lock, exist_ok=True)
-        mine = os.path.join(lock, str(os.getpid()))
-        open(mine, "w").close()
-        try:
-            study_jobs.run_here(self, jobs)
-        finally:
-            os.remove(mine)
+        study_jobs.run_here(self, jobs)
 
     def submit(self, sbatch_options, results_args):
-        """The jobs as Slurm job arrays (see study.slurm)."""
+        """The jobs as Slurm job arrays (see study.slurm), unless a local
+        run holds the study's lock (the lock decides: a killed run leaves
+        nothing that could name another process later)."""
         study_slurm.check_sbatch()
-        lock = os.path.join(self.dir, ".dpmStudy.running")
-        others = [pid for pid in (os.listdir(lock) if os.path.isdir(lock) else [])
-                  if pid.isdigit() and os.path.isdir("/proc/" + pid)]
-        if others:
-            sys.exit("dpmStudy: a local dpmStudy (process %s) runs this study; stop it "
-                     "(its cases continue on the cluster) and submit again; nothing "
-                     "submitted" % ", ".join(others))
+        lock = None
+        if os.path.isdir(self.dir):
+            lock = self.study_lock(exclusive=True)
+            if lock is None:
+                pids = flock_holders(os.path.join(self.dir, STUDY_LOCK))
+                sys.exit("dpmStudy: a local dpmStudy (%s) runs this study (it holds %s); "
+                         "stop it (its cases continue on the cluster) and submit again; "
+                         "nothing submitted"
+                         % ("process " + ", ".join(map(str, pids)) if pids else "on another host",
+                            os.path.join(self.dir, STUDY_LOCK)))
+        try:
+            self.submit_locked(sbatch_options, results_args)
+        finally:
+            if lock is not None:
+                os.close(lock)
+
+    def submit_locked(self, sbatch_options, results_args):
         bed_jobs, case_jobs, queued = self.prepare()
         if not bed_jobs and not case_jobs:
             say("dpmStudy: nothing to submit")

@@ -9,6 +9,7 @@ import re
 import sys
 
 from .foam_edit import foam_has, foam_remove, foam_set
+from ..files import replacing
 
 
 VARIANT_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9.-]*$")
@@ -110,7 +111,7 @@ class Variant:
                 foam_remove(os.path.join(case, f), entry)
             else:
                 foam_set(os.path.join(case, f), entry, value)
-        with open(os.path.join(case, "constant", "variant"), "w") as f:
+        with replacing(os.path.join(case, "constant", "variant")) as f:
             f.write(self.record())
 
     def record(self):
