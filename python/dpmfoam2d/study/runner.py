@@ -59,6 +59,23 @@ def copy_template(template, dest):
                     ignore=lambda d, names: [n for n in names if NOT_COPIED.match(n)])
 
 
+def make_dir(template, dest, fill):
+    """dest made whole or not at all: the template copied into a directory
+    of its own beside dest (a dot name, which no study lists), fill(it)
+    run there, then renamed to dest. A failed fill (a variant value
+    foamDictionary refuses) leaves nothing."""
+    tmp = os.path.join(os.path.dirname(dest), ".%s.making%d" % (os.path.basename(dest),
+                                                               os.getpid()))
+    shutil.rmtree(tmp, ignore_errors=True)
+    try:
+        copy_template(template, tmp)
+        fill(tmp)
+        os.rename(tmp, dest)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
+
+
 class Study:
 
     def __init__(self, args):
@@ -78,9 +95,9 @@ class Study:
         self.scale = self.variant.scaled(args.scale) if self.variant else args.scale
 
     def apply_variant(self, directory):
-        """The variant's edits, then -scale's particleScale (it includes the
-        variant's own)."""
-        self.variant.apply(directory)
+        """The variant's edits with -scale's particleScale (it includes the
+        variant's own) in place of the variant's, then that particleScale."""
+        self.variant.apply(directory, self.scale)
         if self.scale is not None:
             foam_set(os.path.join(directory, "constant", "caseSettings"),
                      "particleScale", self.scale)
@@ -125,16 +142,21 @@ class Study:
         if pid:
             sys.exit("dpmStudy: %s is being packed by process %d (another dpmStudy?): "
                      "run again when it has finished" % (bed, pid))
-        if not os.path.isdir(bed):
-            copy_template(self.template, bed)
+        def fill(d):
+            self.settings(d, w, seed=seed)
+            if self.variant and self.variant.shapes_bed():
+                self.apply_variant(d)     # after the settings, as in its cases
+        made = not os.path.isdir(bed)
+        if made:
+            os.makedirs(os.path.dirname(bed), exist_ok=True)
+            make_dir(self.template, bed, fill)
         lock = locked(bed)
         if lock is None:
             sys.exit("dpmStudy: %s is being packed by %s: run again when it has finished"
                      % (bed, lock_holder(bed) or "another process"))
         try:
-            self.settings(bed, w, seed=seed)
-            if self.variant and self.variant.shapes_bed():
-                self.apply_variant(bed)     # after the settings, as in its cases
+            if not made:            # a bed whose packing did not end: today's settings
+                fill(bed)
         finally:
             os.close(lock)
         # Saved under a temporary name first: a packing killed half-way
@@ -163,16 +185,17 @@ class Study:
         name = os.path.basename(case)
         existed = os.path.isdir(case)
         if not existed:
-            copy_template(self.template, case)
-            self.settings(case, w, p, seed)
-            # before the variant: foamDictionary writes particleProperties
-            # with its #includeIfPresent "packedBed" expanded as it is then
-            write_text(os.path.join(case, "constant", "packedBed"),
-                       '// The bed of this mass fraction, packed once by dpmStudy\n'
-                       'file "$FOAM_CASE/../beds/%s/constant/packedBed.state";\n'
-                       % self.bed_of(w, seed))
-            if self.variant:
-                self.apply_variant(case)
+            def fill(d):
+                self.settings(d, w, p, seed)
+                # before the variant: foamDictionary writes particleProperties
+                # with its #includeIfPresent "packedBed" expanded as it is then
+                write_text(os.path.join(d, "constant", "packedBed"),
+                           '// The bed of this mass fraction, packed once by dpmStudy\n'
+                           'file "$FOAM_CASE/../beds/%s/constant/packedBed.state";\n'
+                           % self.bed_of(w, seed))
+                if self.variant:
+                    self.apply_variant(d)
+            make_dir(self.template, case, fill)
         else:
             self.check_variant(case)
             queued = self.slurm_active(case)

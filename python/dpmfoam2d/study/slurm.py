@@ -201,8 +201,10 @@ def status(study, running_in, latest_complete_time):
     from . import cases as study_cases
     states = queue_states()
     beds_dir = os.path.join(study.dir, "beds")
+    # (a dot name: a bed being made)
     dirs = [("beds/" + b, os.path.join(beds_dir, b), "bed")
-            for b in sorted(os.listdir(beds_dir))] if os.path.isdir(beds_dir) else []
+            for b in sorted(os.listdir(beds_dir)) if not b.startswith(".")] \
+        if os.path.isdir(beds_dir) else []
     dirs += [(c["case"], c["dir"], "case") for c in study_cases.find_cases(study.dir)]
     if not dirs:
         say("dpmStudy: no beds or cases in %s" % study.dir)
