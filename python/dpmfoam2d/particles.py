@@ -58,6 +58,10 @@ _XDMF_TYPES = {
 }
 
 
+class ParticleFileError(ValueError):
+    """A particle file that HDF5 cannot read, its path in the message."""
+
+
 def time_name(t):
     """The time as OpenFOAM prints it in directory names (general format,
     6 significant digits): 0.01 -> '0.01', 1.5 -> '1.5', 2 -> '2'."""
@@ -125,15 +129,32 @@ def write_particles(case, t, position, diameter, cls, velocity=None,
 def read_particles(path):
     """One particle file as a dict: every dataset of FIELDS it holds (numpy
     arrays) plus 'time' (float). A file without one of the datasets the
-    solver always writes is refused, naming it."""
-    with h5py.File(path, "r") as f:
-        missing = [key for key in REQUIRED if key not in f]
-        if missing or "time" not in f.attrs:
-            raise ValueError("%s: not a dpmFoam2D particle file (no %s)"
-                             % (path, ", ".join(missing or ["time attribute"])))
-        out = {key: f[key][()] for key in FIELDS if key in f}
-        out["time"] = float(f.attrs["time"])
+    solver always writes is refused, naming it; so is a file HDF5 cannot
+    read (cut short, damaged: ParticleFileError, naming it)."""
+    try:
+        with h5py.File(path, "r") as f:
+            missing = [key for key in REQUIRED if key not in f]
+            if missing or "time" not in f.attrs:
+                raise ValueError("%s: not a dpmFoam2D particle file (no %s)"
+                                 % (path, ", ".join(missing or ["time attribute"])))
+            out = {key: f[key][()] for key in FIELDS if key in f}
+            out["time"] = float(f.attrs["time"])
+    except FileNotFoundError:
+        raise FileNotFoundError("no particle file %s" % path)
+    except (OSError, KeyError, RuntimeError) as e:
+        raise ParticleFileError("%s: unreadable particle file (%s): cut short or damaged "
+                                "(a run killed while writing it?); remove it or rerun from "
+                                "an earlier time" % (path, str(e).split("\n")[0]))
     return out
+
+
+def readable(path):
+    """None if path reads as a particle file, else why not (the message)."""
+    try:
+        read_particles(path)
+    except (ValueError, OSError) as e:
+        return str(e)
+    return None
 
 
 def read(case, t=None):

@@ -10,6 +10,7 @@ import subprocess
 import tempfile
 import time
 
+from .. import particles as pio
 from ..files import create_new
 
 HERE = os.path.dirname(os.path.realpath(__file__))
@@ -96,7 +97,12 @@ class VirtualDisplay:
 
 def render(case, times, outs, height=1200, full=False):
     """Render the particle times to the PNG files outs with pvbatch on a
-    virtual display (one ParaView session for all of them)."""
+    virtual display (one ParaView session for all of them). A particle
+    file that cannot be read is refused here, naming it (ValueError)."""
+    for t in times:
+        problem = pio.readable(pio.nearest_time(case, t)[1])
+        if problem:
+            raise ValueError(problem)
     ensure_foam(case)
     for out in outs:
         os.makedirs(os.path.dirname(os.path.abspath(out)) or ".", exist_ok=True)
