@@ -47,6 +47,8 @@ def open_lock(path, create=True):
     if not stat.S_ISREG(os.fstat(fd).st_mode):
         os.close(fd)
         raise LockError("%s is not a regular file; a lock must be one: remove it" % path)
+    # the descriptor is handed down to the solver: as a plain open would be
+    fcntl.fcntl(fd, fcntl.F_SETFL, fcntl.fcntl(fd, fcntl.F_GETFL) & ~os.O_NONBLOCK)
     return fd
 
 
