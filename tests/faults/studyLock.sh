@@ -5,7 +5,8 @@
 # 1 bar, 5 % of Table 3's particles; nothing is packed or run):
 #   1. a bed's, a case's or results/' lock that is a symbolic link to a file
 #      outside the study: refused naming the link, the file unchanged;
-#   2. a case's lock that is a directory: refused naming it;
+#   2. a case's lock that is a directory or a FIFO: refused naming it (the
+#      FIFO at once, not waited on);
 #   3. the study on a read-only file system (a read-only bind mount in a
 #      mount namespace of its own; left out where unshare cannot make one):
 #      refused naming a path, no traceback;
@@ -41,12 +42,17 @@ do
     echo "ok   $lock: $(tail -1 log.link$n | cut -c1-160)"
 done
 
-echo "2. a case's lock that is a directory"
-mkdir -p lockDir/$case1/.dpmLock
-dpmStudy lockDir "${args[@]}" > log.lockDir 2>&1 && fail "a study ran beside a lock directory"
-noTraceback log.lockDir "a lock directory"
-grep -q "lockDir/$case1/.dpmLock is a directory" log.lockDir || { cat log.lockDir; fail "no message naming the directory"; }
-echo "ok   $(tail -1 log.lockDir | cut -c1-160)"
+echo "2. a case's lock that is a directory or a FIFO"
+mkdir -p lockDir/$case1/.dpmLock lockFifo/$case1
+mkfifo lockFifo/$case1/.dpmLock
+for kind in Dir Fifo
+do
+    timeout 60 dpmStudy lock$kind "${args[@]}" > log.lock$kind 2>&1 && fail "a study ran beside a lock $kind"
+    noTraceback log.lock$kind "a lock $kind"
+    grep -q "lock$kind/$case1/.dpmLock is \(a directory\|not a regular file\)" log.lock$kind \
+        || { cat log.lock$kind; fail "no message naming the lock $kind"; }
+    echo "ok   $(tail -1 log.lock$kind | cut -c1-160)"
+done
 
 echo "3. the study on a read-only file system"
 mkdir -p readOnly/$case1

@@ -15,7 +15,7 @@ import time
 
 from ..fields import time_dirs
 from ..files import create_new
-from .locks import LOCK_PID, LockError, lock_holder, take_lock  # noqa: F401
+from .locks import LOCK_PID, LockError, lock_holder, take_lock
 
 
 PROGRESS = re.compile(r"Progress: t = (\S+) s \((\d+)%\), (\S+) wall s per "
