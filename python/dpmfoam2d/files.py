@@ -19,16 +19,16 @@ def _mode():
 
 
 @contextlib.contextmanager
-def replacing(path, newline=None):
-    """A text file to write path's new content to: renamed onto path when
-    the block ends without an error, removed otherwise. A directory at path
-    is refused (IsADirectoryError naming it)."""
+def replacing(path, newline=None, binary=False):
+    """A text (or binary) file to write path's new content to: renamed onto
+    path when the block ends without an error, removed otherwise. A
+    directory at path is refused (IsADirectoryError naming it)."""
     if os.path.isdir(path) and not os.path.islink(path):
         raise IsADirectoryError(21, "Is a directory", path)
     directory = os.path.dirname(path) or "."
     fd, tmp = tempfile.mkstemp(dir=directory, prefix="." + os.path.basename(path) + ".")
     try:
-        with os.fdopen(fd, "w", newline=newline) as f:
+        with (os.fdopen(fd, "wb") if binary else os.fdopen(fd, "w", newline=newline)) as f:
             yield f
         os.chmod(tmp, _mode())
         os.replace(tmp, path)
@@ -42,6 +42,13 @@ def write_text(path, text):
     """path's content replaced by text (see replacing)."""
     with replacing(path) as f:
         f.write(text)
+
+
+def save_figure(fig, path, **options):
+    """A matplotlib figure saved to path (see replacing), its format from
+    path's extension."""
+    with replacing(path, binary=True) as f:
+        fig.savefig(f, format=os.path.splitext(path)[1].lstrip(".") or "png", **options)
 
 
 def create_new(path):

@@ -68,13 +68,21 @@ def main():
     print("dpmMovie: rendering %d frames" % len(frames))
     tools.render(args.case, times, frames, height=args.height, full=args.full)
     os.makedirs(os.path.dirname(os.path.abspath(out)) or ".", exist_ok=True)
+    # encoded beside out, then renamed onto it: a link at out is replaced,
+    # not written through
+    tmp = os.path.join(os.path.dirname(os.path.abspath(out)),
+                       ".%s.%d%s" % (os.path.basename(out), os.getpid(),
+                                     os.path.splitext(out)[1] or ".mp4"))
     cmd = ["ffmpeg", "-y", "-loglevel", "error", "-framerate", str(args.fps),
            "-i", os.path.join(frameDir, "frame_%06d.png"),
            "-c:v", "libx264", "-pix_fmt", "yuv420p",
-           "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", out]
+           "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", tmp]
     r = subprocess.run(cmd)
-    if r.returncode != 0 or not os.path.isfile(out):
+    if r.returncode != 0 or not os.path.isfile(tmp):
+        if os.path.exists(tmp):
+            os.remove(tmp)
         sys.exit("dpmMovie: ffmpeg failed: %s" % " ".join(cmd))
+    os.replace(tmp, out)
     if not args.keep:
         shutil.rmtree(frameDir, ignore_errors=True)
     print(out)
