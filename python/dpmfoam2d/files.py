@@ -51,6 +51,16 @@ def save_figure(fig, path, **options):
         fig.savefig(f, format=os.path.splitext(path)[1].lstrip(".") or "png", **options)
 
 
+def own_directory(path):
+    """path made if missing, as a tool makes its output directory; a
+    symbolic link there is refused (NotADirectoryError naming it): what is
+    written into it would land where the link points."""
+    if os.path.islink(path):
+        raise NotADirectoryError(20, "a symbolic link, not a directory of its own (what is "
+                                 "written there would land where it points): remove it", path)
+    os.makedirs(path, exist_ok=True)
+
+
 def create_new(path):
     """A new text file at path, opened for writing; FileExistsError if
     anything, a symbolic link included, is there already."""

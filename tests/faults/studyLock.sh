@@ -4,7 +4,8 @@
 # bin/dpmStudy's locks and the paths it writes, on a reduced study (w 0.5 at
 # 1 bar, 5 % of Table 3's particles; nothing is packed or run):
 #   1. a bed's, a case's or results/' lock that is a symbolic link to a file
-#      outside the study: refused naming the link, the file unchanged;
+#      outside the study: refused naming the link, the file unchanged; so
+#      is a results/ that is a link to a directory outside, left empty;
 #   2. a case's lock that is a directory or a FIFO: refused naming it (the
 #      FIFO at once, not waited on);
 #   3. the study on a read-only file system (a read-only bind mount in a
@@ -41,6 +42,15 @@ do
     [ "$(cat outside$n)" = "precious $n" ] || fail "the file $lock points to was written: $(cat outside$n)"
     echo "ok   $lock: $(tail -1 log.link$n | cut -c1-160)"
 done
+
+mkdir -p outsideDir linkDir
+ln -s "$PWD/outsideDir" linkDir/results
+dpmStudy linkDir "${args[@]}" -results > log.linkDir 2>&1 && fail "results/ made in a linked directory"
+noTraceback log.linkDir "a linked results/"
+grep -q "linkDir/results: a symbolic link, not a directory of its own" log.linkDir \
+    || { cat log.linkDir; fail "no message naming the linked results/"; }
+[ -z "$(ls -A outsideDir)" ] || fail "results/ written where its link points: $(ls -A outsideDir)"
+echo "ok   results/ a link: $(tail -1 log.linkDir | cut -c1-160)"
 
 echo "2. a case's lock that is a directory or a FIFO"
 mkdir -p lockDir/$case1/.dpmLock lockFifo/$case1

@@ -17,7 +17,7 @@ import numpy as np  # noqa: E402
 from .. import BIN_DIR  # noqa: E402
 from ..tables import read_postprocessing  # noqa: E402
 from . import ensemble as ens  # noqa: E402
-from ..files import save_figure
+from ..files import own_directory, save_figure
 BASELINE = "baseline"
 
 
@@ -139,7 +139,7 @@ def snapshots(rows, groups, dirs, out):
     """Final states side by side (the paper's Fig. 2): rows w, columns p;
     the first seed of each ensemble."""
     snaps = os.path.join(out, "snapshots")
-    os.makedirs(snaps, exist_ok=True)
+    own_directory(snaps)
     for variant in OrderedDict.fromkeys(r["variant"] for r in rows):
         ws = sorted({w for v, w, p in groups if v == variant})
         ps = sorted({p for v, w, p in groups if v == variant})

@@ -14,7 +14,7 @@ from .. import BIN_DIR
 from . import definition as study_definition
 from . import cases as study_cases, jobs as study_jobs, slurm as study_slurm
 from .foam_edit import foam_remove, foam_set
-from ..files import write_text
+from ..files import own_directory, write_text
 from .jobs import Job, latest_complete_time, lock_holder, running_in
 from .locks import LockError, flock_holders, open_lock, take_lock
 from .variants import Variant
@@ -148,7 +148,7 @@ class Study:
                 self.apply_variant(d)     # after the settings, as in its cases
         made = not os.path.isdir(bed)
         if made:
-            os.makedirs(os.path.dirname(bed), exist_ok=True)
+            own_directory(os.path.dirname(bed))
             make_dir(self.template, bed, fill)
         lock = locked(bed)
         if lock is None:

@@ -17,7 +17,7 @@ import shutil
 import subprocess
 import sys
 import time
-from ..files import replacing
+from ..files import own_directory, replacing
 
 RECORD = ".dpmStudy.slurm"
 ACTIVE = ("PENDING", "RUNNING", "CONFIGURING", "COMPLETING", "SUSPENDED", "REQUEUED",
@@ -116,7 +116,7 @@ def submit(study, beds, cases, bed_deps, sbatch_options, results_args):
     bed_deps: Slurm ids of beds already pending or running."""
     project = os.path.dirname(study.here)
     slurm = os.path.join(study.dir, "slurm")
-    os.makedirs(slurm, exist_ok=True)
+    own_directory(slurm)
     task = os.path.join(slurm, "task.sh")
     with replacing(task) as f:
         f.write(ARRAY_TASK)
