@@ -192,9 +192,13 @@ def write_xdmf(case):
     grids = []
     for t, path in list_times(case):
         fname = os.path.basename(path)
-        with h5py.File(path, "r") as f:
-            n = f["position"].shape[0]
-            items = {k: (f[k].dtype, f[k].shape) for k in FIELDS if k in f}
+        try:
+            with h5py.File(path, "r") as f:
+                n = f["position"].shape[0]
+                items = {k: (f[k].dtype, f[k].shape) for k in FIELDS if k in f}
+        except (OSError, KeyError) as e:
+            raise ParticleFileError("%s: unreadable particle file (%s): cut short or damaged"
+                                    % (path, str(e).split("\n")[0]))
 
         def item(key):
             dtype, shape = items[key]
