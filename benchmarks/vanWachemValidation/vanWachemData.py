@@ -84,6 +84,10 @@ def pressure_probe(case):
         ts.append(t)
         ps.append(p)
     t, p = np.concatenate(ts), np.concatenate(ps)
+    if not len(t):
+        raise ValueError("%s: no rows ('time value'): the probe has written nothing (an "
+                         "empty file, or its header only)"
+                         % ", ".join(os.path.join(root, name, PROBE_FIELD) for _, name in starts))
     if np.any(np.diff(t) <= 0):
         raise ValueError("%s: the probe's times do not increase strictly" % root)
     return t, p
@@ -96,8 +100,13 @@ def bed_heights(case, fraction=BED_FRACTION):
         raise FileNotFoundError("%s: no particle files <time>.h5" % pio.particles_dir(case))
     out = []
     for t, path in times:
-        with h5py.File(path, "r") as f:
-            top = f["position"][:, 1].astype(float) + 0.5 * f["diameter"][()].astype(float)
+        try:
+            with h5py.File(path, "r") as f:
+                top = f["position"][:, 1].astype(float) + 0.5 * f["diameter"][()].astype(float)
+        except (OSError, KeyError) as e:
+            raise pio.ParticleFileError(
+                "%s: unreadable particle file (%s): cut short or damaged; remove it or "
+                "rerun from an earlier time" % (path, str(e).split("\n")[0]))
         out.append((t, np.quantile(top, fraction), top.max()))
     return np.array(out).T
 

@@ -18,7 +18,9 @@ Writes postProcessing/bedStatistics/0/
                    bubbleFraction   volume fraction of the bed's cells whose
                                     voidage exceeds bubbleVoidage (bubbles)
                    emulsionVoidage  mean voidage of the other bed cells
-  particles.dat  from the particle files, one every -every s:
+  particles.dat  from the particle files, one every -every s (a file HDF5
+                 cannot read, cut short, is left out with a warning naming
+                 it, and the next one read):
                    speedRms<class>  rms speed of the class's particles, m/s
                    still<class>     fraction of them slower than stillSpeed
                    voidage<class>   mean voidage at their centres (the
@@ -40,6 +42,7 @@ import numpy as np
 
 from . import fields as ff
 from . import particles as pio
+from .files import replacing
 
 CLASSES = ("Small", "Large")
 OUT = os.path.join("postProcessing", "bedStatistics", "0")
@@ -95,8 +98,14 @@ def particle_table(case, still, every):
     for t, path in pio.list_times(case):
         if t < next_t - 1e-9:
             continue
+        try:
+            p = pio.read_particles(path)
+        except pio.ParticleFileError as e:
+            # a series: the file left out, said; the next one read instead
+            print("dpmBedStatistics: warning: %s; left out of particles.dat" % e,
+                  file=sys.stderr)
+            continue
         next_t = t + every
-        p = pio.read_particles(path)
         cls = p["class"]
         v = p["velocity"][:, :2].astype(float)
         eps = p["voidage"].astype(float) if "voidage" in p else None
@@ -114,14 +123,13 @@ def particle_table(case, still, every):
 
 
 def write_table(path, comment, names, rows):
-    tmp = "%s.tmp%d" % (path, os.getpid())     # two writers never share it
-    with open(tmp, "w") as f:
+    # a new file renamed onto path: a killed run leaves the previous table
+    with replacing(path) as f:
         for line in comment:
             f.write("# %s\n" % line)
         f.write("# " + "\t".join("%-24s" % n for n in names).rstrip() + "\n")
         for r in rows:
             f.write("\t".join("%-24.17g" % v for v in r).rstrip() + "\n")
-    os.replace(tmp, path)      # a killed run leaves the previous table
 
 
 def main():
@@ -152,7 +160,7 @@ def main():
     try:
         bed = bed_table(a.case, a.bubbleVoidage, a.surfaceVoidage)
         parts = particle_table(a.case, a.stillSpeed, a.every)
-    except ff.FieldError as e:
+    except (ff.FieldError, ValueError) as e:
         sys.exit("dpmBedStatistics: %s" % e)
     if not bed and not parts:
         sys.exit("dpmBedStatistics: %s has no voidage fields and no particle files" % a.case)

@@ -30,6 +30,7 @@ import numpy as np
 import h5py
 
 from .fields import TIME_NAME
+from .files import replacing
 
 PARTICLES_DIR = "particles"
 XDMF_NAME = "particles.xdmf"
@@ -55,6 +56,10 @@ _XDMF_TYPES = {
     np.dtype(np.int8): ("Char", 1),
     np.dtype(np.int32): ("Int", 4),
 }
+
+
+class ParticleFileError(ValueError):
+    """A particle file that HDF5 cannot read, its path in the message."""
 
 
 def time_name(t):
@@ -124,15 +129,32 @@ def write_particles(case, t, position, diameter, cls, velocity=None,
 def read_particles(path):
     """One particle file as a dict: every dataset of FIELDS it holds (numpy
     arrays) plus 'time' (float). A file without one of the datasets the
-    solver always writes is refused, naming it."""
-    with h5py.File(path, "r") as f:
-        missing = [key for key in REQUIRED if key not in f]
-        if missing or "time" not in f.attrs:
-            raise ValueError("%s: not a dpmFoam2D particle file (no %s)"
-                             % (path, ", ".join(missing or ["time attribute"])))
-        out = {key: f[key][()] for key in FIELDS if key in f}
-        out["time"] = float(f.attrs["time"])
+    solver always writes is refused, naming it; so is a file HDF5 cannot
+    read (cut short, damaged: ParticleFileError, naming it)."""
+    try:
+        with h5py.File(path, "r") as f:
+            missing = [key for key in REQUIRED if key not in f]
+            if missing or "time" not in f.attrs:
+                raise ValueError("%s: not a dpmFoam2D particle file (no %s)"
+                                 % (path, ", ".join(missing or ["time attribute"])))
+            out = {key: f[key][()] for key in FIELDS if key in f}
+            out["time"] = float(f.attrs["time"])
+    except FileNotFoundError:
+        raise FileNotFoundError("no particle file %s" % path)
+    except (OSError, KeyError, RuntimeError) as e:
+        raise ParticleFileError("%s: unreadable particle file (%s): cut short or damaged "
+                                "(a run killed while writing it?); remove it or rerun from "
+                                "an earlier time" % (path, str(e).split("\n")[0]))
     return out
+
+
+def readable(path):
+    """None if path reads as a particle file, else why not (the message)."""
+    try:
+        read_particles(path)
+    except (ValueError, OSError) as e:
+        return str(e)
+    return None
 
 
 def read(case, t=None):
@@ -170,9 +192,13 @@ def write_xdmf(case):
     grids = []
     for t, path in list_times(case):
         fname = os.path.basename(path)
-        with h5py.File(path, "r") as f:
-            n = f["position"].shape[0]
-            items = {k: (f[k].dtype, f[k].shape) for k in FIELDS if k in f}
+        try:
+            with h5py.File(path, "r") as f:
+                n = f["position"].shape[0]
+                items = {k: (f[k].dtype, f[k].shape) for k in FIELDS if k in f}
+        except (OSError, KeyError) as e:
+            raise ParticleFileError("%s: unreadable particle file (%s): cut short or damaged"
+                                    % (path, str(e).split("\n")[0]))
 
         def item(key):
             dtype, shape = items[key]
@@ -200,6 +226,6 @@ def write_xdmf(case):
             '%s\n    </Grid>\n  </Domain>\n</Xdmf>\n'
             % "\n".join("  " + g.replace("\n", "\n  ") for g in grids))
     path = os.path.join(particles_dir(case), XDMF_NAME)
-    with open(path, "w") as f:
+    with replacing(path) as f:
         f.write(text)
     return path

@@ -17,29 +17,62 @@ import sys
 import numpy as np
 
 from .fields import TIME_NAME
+from .particles import check_case
 
 def read_dat(path):
     """Columns of a whitespace table (laceyIndex.dat, segregation.dat):
     dict name -> numpy array. The column names are the last '#' line before
     the first row of numbers (OpenFOAM's writeFile may put other comment
-    lines above it)."""
+    lines above it). A row that is not one number per column is refused,
+    naming the file and line; only a last line without its end of line (a
+    run writing it, or killed while it did) is left out, with a note."""
     names = None
     rows = []
-    with open(path) as f:
-        for line in f:
-            s = line.strip()
-            if not s:
-                continue
-            if s.startswith("#"):
-                if not rows:
-                    names = s.lstrip("#").split()
-                continue
-            rows.append([float(v) for v in s.split()])
+    with open(path, errors="replace") as f:
+        lines = f.read().split("\n")
+    complete = len(lines) - 1          # the lines that end in a newline
+    for n, line in enumerate(lines, 1):
+        s = line.strip()
+        if not s:
+            continue
+        if s.startswith("#"):
+            if not rows:
+                names = s.lstrip("#").split()
+            continue
+        if names is None:
+            raise ValueError("%s line %d: a row before the '#' header line naming the "
+                             "columns" % (path, n))
+        words = s.split()
+        try:
+            values = [float(v) for v in words]
+        except ValueError:
+            bad = next(v for v in words if not _is_number(v))
+            values = None
+        if values is not None and len(values) == len(names):
+            rows.append(values)
+            continue
+        if n > complete:
+            print("note: %s line %d: cut short (no end of line): left out" % (path, n),
+                  file=sys.stderr)
+            continue
+        if values is None:
+            raise ValueError("%s line %d: '%s' is not a number (columns: %s)"
+                             % (path, n, bad, " ".join(names)))
+        raise ValueError("%s line %d: %d values for the %d columns %s"
+                         % (path, n, len(values), len(names), " ".join(names)))
     if names is None:
         raise ValueError("%s: no '#' header line naming the columns" % path)
     a = np.array(rows, dtype=float).reshape(-1, len(names)) if rows \
         else np.zeros((0, len(names)))
     return {name: a[:, i] for i, name in enumerate(names)}
+
+
+def _is_number(word):
+    try:
+        float(word)
+        return True
+    except ValueError:
+        return False
 
 
 POSTPROCESS_MARK = "# postProcess"
@@ -99,7 +132,10 @@ def read_postprocessing(case, name, fname, postprocess=False, quiet=False):
     of the run's table, with a note on stderr naming them, unless the case
     has no run table; postprocess=True returns them instead (joined in the
     order they were written). Returns dict name -> array, or None if there
-    is no such table."""
+    is no such table; a case directory that does not exist is refused
+    (FileNotFoundError naming it)."""
+    if not os.path.isdir(case):
+        raise FileNotFoundError("no case directory %s" % case)
     root = os.path.join(case, "postProcessing", name)
     if not os.path.isdir(root):
         return None
@@ -147,14 +183,18 @@ def read_postprocessing(case, name, fname, postprocess=False, quiet=False):
 
 def lacey(case, name="laceyIndex", postprocess=False):
     """M(t) of a case: the columns of laceyIndex.dat (Time, M, ...) of the
-    function object name, joined over the run's restarts; None if absent."""
+    function object name, joined over the run's restarts; None if the case
+    has none. A path that is not a case is refused (FileNotFoundError)."""
+    check_case(case)
     return read_postprocessing(case, name, "laceyIndex.dat", postprocess)
 
 
 def segregation(case, name="laceyIndex", postprocess=False):
     """The vertical and horizontal segregation indices and the classes'
     mean heights and distances from the centre line over time
-    (segregation.dat); None if absent."""
+    (segregation.dat); None if the case has none. A path that is not a case
+    is refused (FileNotFoundError)."""
+    check_case(case)
     return read_postprocessing(case, name, "segregation.dat", postprocess)
 
 

@@ -43,7 +43,8 @@ grep -q "sbatch refused the beds: .*[Pp]artition" log.badPartition \
 [ -z "$(squeue -h)" ] || fail "something was submitted after an sbatch error"
 dpmStudy busy "${tiny[@]}" -p 1 -endTime 5 -j 1 > log.busyLocal 2>&1 &
 busyPid=$!
-for i in $(seq 1 300); do [ -d busy/.dpmStudy.running ] && break; sleep 0.2; done
+# the local run holds the study's lock (shared) while it runs
+for i in $(seq 1 300); do [ -e busy/.dpmStudy.lock ] && ! flock -n -x busy/.dpmStudy.lock true && break; sleep 0.2; done
 dpmStudy busy "${tiny[@]}" -p 1 -endTime 5 -slurm > log.busy 2>&1 && fail "-slurm beside a local dpmStudy went on"
 kill -TERM $busyPid; wait $busyPid
 grep -q "a local dpmStudy (process $busyPid) runs this study" log.busy || { cat log.busy; fail "no message on a local run"; }

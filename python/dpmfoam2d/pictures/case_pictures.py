@@ -14,6 +14,7 @@ mixing_all.png in the current directory. -report prints a JSON summary.
 """
 
 import argparse
+import math
 import json
 import os
 import subprocess
@@ -38,6 +39,9 @@ def main():
         sys.exit("dpmPictures: %d labels for %d cases" % (len(labels), len(args.cases)))
     if args.every < 1:
         sys.exit("dpmPictures: -every %d must be >= 1" % args.every)
+    if args.times and not all(math.isfinite(t) for t in args.times):
+        sys.exit("dpmPictures: -times %s: times must be finite numbers (s)"
+                 % " ".join("%g" % t for t in args.times))
     for case in args.cases:
         pio.check_case(case)
         if not pio.list_times(case) and tables.read_postprocessing(

@@ -9,10 +9,12 @@ Frames as dpmSnapshot draws them (one window for all frames: the bed up to
 a quarter above its highest top over the run), every K-th particle time in
 [T0, T1], rendered in one pvbatch session into <case>/images/frames/, then
 encoded with ffmpeg (H.264, yuv420p, N frames per second; default 25).
-Default output <case>/images/movie.mp4. -keep keeps the frames.
+Default output <case>/images/movie.mp4. -keep keeps the frames. A particle
+file that cannot be read (cut short) is left out with a warning naming it.
 """
 
 import argparse
+import math
 import os
 import shutil
 import subprocess
@@ -37,11 +39,24 @@ def main():
     args = ap.parse_args()
     if args.every < 1 or args.fps < 1 or args.height < 2:
         sys.exit("dpmMovie: -every and -fps must be >= 1, -height >= 2")
+    for name in ("start", "end"):
+        value = getattr(args, name)
+        if value is not None and not math.isfinite(value):
+            sys.exit("dpmMovie: -%s %g: a time must be a finite number (s)" % (name, value))
     pio.check_case(args.case)
 
     times = [t for t, _ in pio.list_times(args.case)
              if (args.start is None or t >= args.start - 1e-12)
              and (args.end is None or t <= args.end + 1e-12)][::args.every]
+    # a series: a file that cannot be read is left out, said, not drawn
+    readable = []
+    for t in times:
+        problem = pio.readable(pio.nearest_time(args.case, t)[1])
+        if problem:
+            print("dpmMovie: warning: %s; its frame is left out" % problem, file=sys.stderr)
+        else:
+            readable.append(t)
+    times = readable
     if not times:
         sys.exit("dpmMovie: no particle files in %s for these times"
                  % pio.particles_dir(args.case))
@@ -53,13 +68,21 @@ def main():
     print("dpmMovie: rendering %d frames" % len(frames))
     tools.render(args.case, times, frames, height=args.height, full=args.full)
     os.makedirs(os.path.dirname(os.path.abspath(out)) or ".", exist_ok=True)
+    # encoded beside out, then renamed onto it: a link at out is replaced,
+    # not written through
+    tmp = os.path.join(os.path.dirname(os.path.abspath(out)),
+                       ".%s.%d%s" % (os.path.basename(out), os.getpid(),
+                                     os.path.splitext(out)[1] or ".mp4"))
     cmd = ["ffmpeg", "-y", "-loglevel", "error", "-framerate", str(args.fps),
            "-i", os.path.join(frameDir, "frame_%06d.png"),
            "-c:v", "libx264", "-pix_fmt", "yuv420p",
-           "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", out]
+           "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", tmp]
     r = subprocess.run(cmd)
-    if r.returncode != 0 or not os.path.isfile(out):
+    if r.returncode != 0 or not os.path.isfile(tmp):
+        if os.path.exists(tmp):
+            os.remove(tmp)
         sys.exit("dpmMovie: ffmpeg failed: %s" % " ".join(cmd))
+    os.replace(tmp, out)
     if not args.keep:
         shutil.rmtree(frameDir, ignore_errors=True)
     print(out)
@@ -69,5 +92,5 @@ def command():
     """bin/dpmMovie."""
     try:
         main()
-    except (FileNotFoundError, RuntimeError) as e:
+    except (FileNotFoundError, RuntimeError, ValueError) as e:
         sys.exit("dpmMovie: %s" % e)

@@ -6,7 +6,8 @@
 
 Shows the gas voidage (case.foam, created empty if missing) behind the
 particles of particles/particles.xdmf as spheres of their true diameter,
-coloured by class, at the latest time (or the one nearest to T). Without
+coloured by class, at the latest time (or the one nearest to T; its
+particle file must be readable, else it is refused, naming it). Without
 -screenshot it opens ParaView's window with this scene (a display is
 needed); with -screenshot it renders the scene off-screen (a virtual X
 display) to the PNG and exits. The scene is the package's
@@ -14,11 +15,13 @@ pictures/paraview_scene.py, which ParaView can also run by itself (its header li
 """
 
 import argparse
+import math
 import os
 import shutil
 import subprocess
 import sys
 
+from .. import particles as pio
 from . import tools
 
 SCENE = os.path.join(os.path.dirname(os.path.realpath(__file__)), "paraview_scene.py")
@@ -34,10 +37,21 @@ def main():
     args = ap.parse_args()
     if args.height < 2:
         sys.exit("dpmParaView: -height %d must be >= 2 pixels" % args.height)
+    if args.time is not None and not math.isfinite(args.time):
+        sys.exit("dpmParaView: -time %g: a time must be a finite number (s)" % args.time)
     xdmf = os.path.join(args.case, "particles", "particles.xdmf")
     if not os.path.isfile(xdmf):
         sys.exit("dpmParaView: %s not found: run dpmFoam2D in the case first"
                  " (it writes the particle files there)" % xdmf)
+    # the particle file the scene shows (the XDMF's time nearest to -time):
+    # one that cannot be read would leave an earlier time drawn
+    try:
+        t, path = pio.nearest_time(args.case, args.time)
+    except FileNotFoundError as e:
+        sys.exit("dpmParaView: %s" % e)
+    problem = pio.readable(path)
+    if problem:
+        sys.exit("dpmParaView: %s; the scene would show another time than %g s" % (problem, t))
     tools.ensure_foam(args.case)
     env = dict(os.environ, DPM_PARAVIEW_CASE=os.path.abspath(args.case),
                DPM_PARAVIEW_HEIGHT=str(args.height))

@@ -31,6 +31,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 
 from .. import particles as pio, tables  # noqa: E402
+from ..files import save_figure
 
 
 def plot(cases, labels, out, title=None):
@@ -81,7 +82,7 @@ def plot(cases, labels, out, title=None):
             loc="best", fontsize="small")
     fig.tight_layout()
     os.makedirs(os.path.dirname(os.path.abspath(out)) or ".", exist_ok=True)
-    fig.savefig(out, dpi=120)
+    save_figure(fig, out, dpi=120)
     plt.close(fig)
     return report
 

@@ -17,6 +17,7 @@ Runs `pvbatch` on the package's pictures/render.py on a virtual X display (Xvfb)
 """
 
 import argparse
+import math
 import os
 import sys
 
@@ -35,6 +36,8 @@ def main():
     args = ap.parse_args()
     if args.height < 2:
         sys.exit("dpmSnapshot: -height %d must be >= 2 pixels" % args.height)
+    if args.time is not None and not math.isfinite(args.time):
+        sys.exit("dpmSnapshot: -time %g: a time must be a finite number (s)" % args.time)
     pio.check_case(args.case)
 
     t, _ = pio.nearest_time(args.case, args.time)
@@ -48,5 +51,5 @@ def command():
     """bin/dpmSnapshot."""
     try:
         main()
-    except (FileNotFoundError, RuntimeError) as e:
+    except (FileNotFoundError, RuntimeError, ValueError) as e:
         sys.exit("dpmSnapshot: %s" % e)

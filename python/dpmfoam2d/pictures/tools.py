@@ -10,6 +10,9 @@ import subprocess
 import tempfile
 import time
 
+from .. import particles as pio
+from ..files import create_new
+
 HERE = os.path.dirname(os.path.realpath(__file__))
 RENDER = os.path.join(HERE, "render.py")
 
@@ -22,8 +25,11 @@ CLASS_NAMES = {0: "small", 1: "large"}
 def ensure_foam(case):
     """<case>/case.foam, the empty file ParaView's OpenFOAM reader opens."""
     path = os.path.join(case, "case.foam")
-    if not os.path.exists(path):
-        open(path, "a").close()
+    if not os.path.lexists(path):       # a dangling link is not followed
+        try:
+            create_new(path).close()
+        except FileExistsError:         # made meanwhile by another tool
+            pass
     return path
 
 
@@ -91,7 +97,12 @@ class VirtualDisplay:
 
 def render(case, times, outs, height=1200, full=False):
     """Render the particle times to the PNG files outs with pvbatch on a
-    virtual display (one ParaView session for all of them)."""
+    virtual display (one ParaView session for all of them). A particle
+    file that cannot be read is refused here, naming it (ValueError)."""
+    for t in times:
+        problem = pio.readable(pio.nearest_time(case, t)[1])
+        if problem:
+            raise ValueError(problem)
     ensure_foam(case)
     for out in outs:
         os.makedirs(os.path.dirname(os.path.abspath(out)) or ".", exist_ok=True)

@@ -44,7 +44,8 @@ def find_cases(study_dir):
     for name in sorted(os.listdir(study_dir)):
         d = os.path.join(study_dir, name)
         settings = os.path.join(d, "constant", "caseSettings")
-        if name in ("beds", "results") or not os.path.isfile(settings):
+        # a dot name: a case being made (runner.make_dir), not yet one
+        if name in ("beds", "results") or name.startswith(".") or not os.path.isfile(settings):
             continue
         s = flat_dictionary(settings)
         if "pressure" not in s or "wSmall" not in s:

@@ -55,7 +55,10 @@ Variants: a named set of dictionary edits kept with the template in
 <template>/variants/<name> (or a file given by path), one edit a line:
     <file> <entry> <value>        foamDictionary -entry <entry> -set <value>
     <file> <entry> -remove        foamDictionary -entry <entry> -remove
-(# starts a comment). The edits are applied when a case is made; the case
+(# starts a comment; <file> relative to the case and inside it: an absolute
+path or one leaving the case is refused). The edits are applied when a case
+is made (in a directory beside it, renamed when whole: an edit
+foamDictionary refuses leaves no case); the case
 keeps a copy of the file as constant/variant (a rerun from it: -variant
 <case>/constant/variant) and refuses a changed file later. -listVariants
 lists the template's variants. A variant that edits more than the gas's
@@ -70,7 +73,8 @@ without a complete restart state is set aside as <time>.incomplete. A case
 is finished when its end time is on disk. A bed or case another process
 works in (its lock <dir>/.dpmLock is held: a solver, a packer, another
 dpmStudy setting it up) is skipped, naming the process; dpmStudy holds a
-case's lock while setting it up and hands it to its solver.
+case's lock while setting it up and hands it to its solver. A lock path that
+is not a regular file (a symbolic link, a directory) is refused, naming it.
 -endTime T sets every case's end time (a quick look: -endTime 2; later a
 longer one continues from where the short one stopped). One line per case
 every -interval s (default 30): state, simulated time, wall s per simulated
@@ -104,6 +108,7 @@ particleScale, e.g. slab5mm's twice Table 3's; shorter settling).
 """
 
 import argparse
+import errno
 import os
 import sys
 
@@ -111,6 +116,7 @@ from .. import PROJECT_DIR
 from . import definition as study_definition
 from . import results as study_results, slurm as study_slurm
 from .jobs import latest_complete_time, path_problem, running_in
+from .locks import LockError
 from .runner import Study, say
 from .variants import first_line_comment, list_variants
 
@@ -239,5 +245,14 @@ def main():
 
 
 def command():
-    """bin/dpmStudy."""
-    main()
+    """bin/dpmStudy: a file it cannot write, or a lock path that cannot be
+    one, ends it with the path named."""
+    try:
+        main()
+    except LockError as e:
+        sys.exit("dpmStudy: %s" % e)
+    except OSError as e:
+        if e.filename is None:
+            raise
+        hint = ": the study must be on a writable file system" if e.errno == errno.EROFS else ""
+        sys.exit("dpmStudy: %s: %s%s" % (e.filename, e.strerror, hint))

@@ -34,6 +34,7 @@ dictionaries, lists, quoted strings; no #include or $macros). The runner
 copies it into the study directory, whose copy the results then follow.
 """
 
+import math
 import os
 import re
 
@@ -52,61 +53,94 @@ class DefinitionError(Exception):
 
 def parse(text, path):
     """An OpenFOAM-syntax dictionary as nested dicts; a value is a string
-    (quoted or a word), a list of them, or a dict."""
+    (quoted or a word), a list of them, or a dict. Directives (#include,
+    #eval ...) and $macros are refused, naming the line."""
     tokens, pos = [], 0
     while pos < len(text):
         m = _TOKEN.match(text, pos)
         if not m:
-            raise DefinitionError("%s: cannot read the text at character %d" % (path, pos))
-        pos = m.end()
+            raise DefinitionError("%s line %d: cannot read the text at character %d"
+                                  % (path, _line(text, pos), pos))
         if m.group(1) is not None:
-            tokens.append(("string", m.group(1)))
+            tokens.append(("string", m.group(1), pos))
         elif m.group(2):
-            tokens.append((m.group(2), m.group(2)))
+            tokens.append((m.group(2), m.group(2), pos))
         elif m.group(3):
-            tokens.append(("word", m.group(3)))
-    out, i = _dictionary(tokens, 0, path, top=True)
+            word = m.group(3)
+            if word.startswith("#") or word.startswith("$"):
+                raise DefinitionError(
+                    "%s line %d: %s is not supported in a %s: it is read without "
+                    "OpenFOAM's directives and macros (#include, #eval, $name); write the "
+                    "entries out" % (path, _line(text, pos), word, FILE_NAME))
+            tokens.append(("word", word, pos))
+        pos = m.end()
+    out, i = _dictionary(tokens, 0, path, top=True, text=text)
     return out
 
 
-def _dictionary(tokens, i, path, top=False):
+def _line(text, pos):
+    return text.count("\n", 0, pos) + 1
+
+
+def _dictionary(tokens, i, path, top=False, text=""):
     out = {}
     while i < len(tokens):
-        kind, key = tokens[i]
+        kind, key, pos = tokens[i]
+        where = "%s line %d" % (path, _line(text, pos))
         if kind == "}":
             if top:
-                raise DefinitionError("%s: a '}' closes no dictionary" % path)
+                raise DefinitionError("%s: a '}' closes no dictionary" % where)
             return out, i + 1
         if kind != "word":
-            raise DefinitionError("%s: an entry's name expected, got '%s'" % (path, key))
+            raise DefinitionError("%s: an entry's name expected, got '%s'" % (where, key))
         i += 1
         if i < len(tokens) and tokens[i][0] == "{":
-            out[key], i = _dictionary(tokens, i + 1, path)
+            out[key], i = _dictionary(tokens, i + 1, path, text=text)
             continue
         values = []
         while i < len(tokens) and tokens[i][0] != ";":
-            kind, value = tokens[i]
+            kind, value, pos = tokens[i]
             if kind == "(":
                 items, i = [], i + 1
                 while i < len(tokens) and tokens[i][0] != ")":
                     if tokens[i][0] not in ("word", "string"):
                         raise DefinitionError("%s: %s: only words and numbers in a list"
-                                              % (path, key))
+                                              % (where, key))
                     items.append(tokens[i][1])
                     i += 1
                 values.append(items)
             elif kind in ("word", "string"):
                 values.append(value)
             else:
-                raise DefinitionError("%s: %s: unexpected '%s'" % (path, key, value))
+                raise DefinitionError("%s line %d: %s: unexpected '%s'"
+                                      % (path, _line(text, pos), key, value))
             i += 1
         if i >= len(tokens):
-            raise DefinitionError("%s: %s: no ';' ends the entry" % (path, key))
+            raise DefinitionError("%s: %s: no ';' ends the entry" % (where, key))
         out[key] = values[0] if len(values) == 1 else values
         i += 1
     if not top:
         raise DefinitionError("%s: a dictionary is not closed with '}'" % path)
     return out, i
+
+
+def check_placeholders(path, where, text, allowed):
+    """text formatted with the placeholders it will get (allowed: their
+    names), here, before any case runs: an unknown one is refused."""
+    try:
+        text.format(**{name: "1" for name in allowed})
+    except KeyError as e:
+        got = "{%s}" % e.args[0]
+    except IndexError:
+        got = "a positional placeholder ({} or {0})"
+    except ValueError as e:
+        got = "a brace without its pair (%s)" % e
+    else:
+        return
+    raise DefinitionError("%s: %s \"%s\": %s is no placeholder of it; allowed: %s "
+                          "(a literal brace: {{ or }})"
+                          % (path, where, text, got,
+                             " ".join("{%s}" % n for n in allowed) or "none"))
 
 
 def _numbers(path, where, value):
@@ -115,6 +149,12 @@ def _numbers(path, where, value):
         numbers = [float(v) for v in items]
     except (TypeError, ValueError):
         raise DefinitionError("%s: %s: numbers expected, got %s" % (path, where, value))
+    if not numbers:
+        raise DefinitionError("%s: %s: an empty list; at least one number (a study of no "
+                              "cases would run nothing)" % (path, where))
+    for v in numbers:
+        if not math.isfinite(v):
+            raise DefinitionError("%s: %s: %s is not a finite number" % (path, where, v))
     return [int(v) if v == int(v) else v for v in numbers]
 
 
@@ -133,6 +173,7 @@ class Contrast:
                                   "quantity a b sign)" % (path, where, sorted(unknown)[0]))
         self.finding = str(spec["finding"])
         self.comparison = str(spec["comparison"])
+        check_placeholders(path, where + "/comparison", self.comparison, (each,))
         self.quantity = spec["quantity"]
         if self.quantity not in QUANTITIES:
             raise DefinitionError("%s: %s/quantity %s: one of %s"
@@ -175,6 +216,8 @@ class Definition:
         if not isinstance(notes, dict):
             raise DefinitionError("%s: findingsNotes: a dictionary of finding \"text\"" % path)
         self.findings_notes = [(str(k), str(v)) for k, v in notes.items()]
+        for k, v in self.findings_notes:
+            check_placeholders(path, "findingsNotes/%s" % k, v, ("rateWindow",))
         self.groups = []
         findings = d.get("findings", {})
         if not isinstance(findings, dict):

@@ -17,6 +17,7 @@ import numpy as np  # noqa: E402
 from .. import BIN_DIR  # noqa: E402
 from ..tables import read_postprocessing  # noqa: E402
 from . import ensemble as ens  # noqa: E402
+from ..files import own_directory, save_figure
 BASELINE = "baseline"
 
 
@@ -63,7 +64,7 @@ def mixing(dirs, groups, labels, title, png):
     axS.set_xlabel("time (s)")
     axS.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(png, dpi=110)
+    save_figure(fig, png, dpi=110)
     plt.close(fig)
 
 
@@ -96,7 +97,7 @@ def against_pressure(ensemble, variant, panels, png, X):
     fig.suptitle("%s: means of the last %g s over seeds (bars: 95 %% interval)"
                  % (variant, X), fontsize=9)
     fig.tight_layout()
-    fig.savefig(png, dpi=110)
+    save_figure(fig, png, dpi=110)
     plt.close(fig)
 
 
@@ -138,7 +139,7 @@ def snapshots(rows, groups, dirs, out):
     """Final states side by side (the paper's Fig. 2): rows w, columns p;
     the first seed of each ensemble."""
     snaps = os.path.join(out, "snapshots")
-    os.makedirs(snaps, exist_ok=True)
+    own_directory(snaps)
     for variant in OrderedDict.fromkeys(r["variant"] for r in rows):
         ws = sorted({w for v, w, p in groups if v == variant})
         ps = sorted({p for v, w, p in groups if v == variant})
@@ -161,6 +162,6 @@ def snapshots(rows, groups, dirs, out):
                              fontsize=9)
         fig.tight_layout()
         png = os.path.join(out, "%ssnapshots.png" % prefix(variant))
-        fig.savefig(png, dpi=130)
+        save_figure(fig, png, dpi=130)
         plt.close(fig)
         print("results: %s" % png, flush=True)

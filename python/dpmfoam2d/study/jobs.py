@@ -6,7 +6,6 @@ directory another process works in (running_in, the directory's lock); and
 the restart housekeeping: logs rotated, time directories without a complete
 restart state set aside (latest_complete_time)."""
 
-import fcntl
 import os
 import re
 import signal
@@ -15,6 +14,8 @@ import sys
 import time
 
 from ..fields import time_dirs
+from ..files import create_new
+from .locks import LOCK_PID, LockError, lock_holder, take_lock
 
 
 PROGRESS = re.compile(r"Progress: t = (\S+) s \((\d+)%\), (\S+) wall s per "
@@ -55,54 +56,6 @@ def rotate_log(path):
         while os.path.exists("%s.%d" % (path, n)):
             n += 1
         os.rename(path, "%s.%d" % (path, n))
-
-
-# The lock of a case or bed (src/dpmCoupling/caseLock): flock on this file,
-# its first line naming the holder
-LOCK_FILE = ".dpmLock"
-LOCK_PID = re.compile(r"\(pid (\d+) ")
-
-
-def lock_holder(directory):
-    """The holder's line of directory's lock if another process holds it,
-    else None. Looks without taking it (a shared lock for an instant)."""
-    try:
-        fd = os.open(os.path.join(directory, LOCK_FILE), os.O_RDONLY | os.O_CLOEXEC)
-    except OSError:
-        return None
-    try:
-        try:
-            fcntl.flock(fd, fcntl.LOCK_SH | fcntl.LOCK_NB)
-        except BlockingIOError:
-            line = os.pread(fd, 512, 0).decode(errors="replace").split("\n")[0]
-            return line or "a process starting up"
-        fcntl.flock(fd, fcntl.LOCK_UN)
-        return None
-    finally:
-        os.close(fd)
-
-
-def take_lock(directory):
-    """directory's lock for this process (a descriptor), or None when
-    another process holds it. A child given the descriptor
-    (DPMFOAM2D_LOCK_FD) holds it on after this process closes its copy."""
-    path = os.path.join(directory, LOCK_FILE)
-    # read-only: no file open for writing (a remount read-only would fail)
-    fd = os.open(path, os.O_RDONLY | os.O_CREAT | os.O_CLOEXEC, 0o644)
-    for attempt in range(10):       # a look by lock_holder holds it an instant
-        try:
-            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-            break
-        except BlockingIOError:
-            time.sleep(0.02)
-    else:
-        os.close(fd)
-        return None
-    line = "dpmStudy (pid %d on %s, started %s)\n" % (
-        os.getpid(), os.uname().nodename, time.strftime("%Y-%m-%d %H:%M:%S UTC", time.gmtime()))
-    with open(path, "w") as f:      # the lock stays with fd
-        f.write(line)
-    return fd
 
 
 def running_in(directory):
@@ -161,8 +114,12 @@ class Job:
         lock = take_lock(self.dir)
         if lock is None:
             return False
-        rotate_log(os.path.join(self.dir, self.log))
-        out = open(os.path.join(self.dir, self.log), "w")
+        try:
+            rotate_log(os.path.join(self.dir, self.log))
+            out = create_new(os.path.join(self.dir, self.log))
+        except OSError:
+            os.close(lock)
+            raise
         env = dict(os.environ if env is None else env, DPMFOAM2D_LOCK_FD=str(lock))
         self.proc = subprocess.Popen(["bash", "-c", self.command], cwd=self.dir,
                                      stdout=out, stderr=subprocess.STDOUT, env=env,
@@ -253,7 +210,12 @@ def run_here(study, jobs):
                 if pid:
                     j.state = "skipped (process %d runs in it)" % pid
                     continue
-                if not j.start(env):
+                try:
+                    started = j.start(env)
+                except (LockError, OSError) as e:
+                    j.state = "failed (%s)" % e
+                    continue
+                if not started:
                     j.state = "skipped (%s holds its lock)" % (lock_holder(j.dir)
                                                                or "another process")
                     continue

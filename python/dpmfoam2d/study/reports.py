@@ -9,20 +9,21 @@ from collections import OrderedDict
 
 from . import ensemble as ens
 from .cases import BASELINE, BED_STATISTICS
+from ..files import replacing, write_text
 
 
 def write_csv(path, rows):
     if not rows:
-        open(path, "w").close()
+        write_text(path, "")
         return
-    with open(path, "w", newline="") as f:
+    with replacing(path, newline="") as f:
         wr = csv.DictWriter(f, list(rows[0]))
         wr.writeheader()
         wr.writerows(rows)
 
 
 def write_summary(out, rows, windows, X):
-    with open(os.path.join(out, "summary.md"), "w") as f:
+    with replacing(os.path.join(out, "summary.md")) as f:
         f.write("Lacey index M (paper's N: whole bed) and segregation indices; "
                 "'mean' columns: mean over the last %g s of each case.\n"
                 "vertical > 0: small particles above the large; horizontal > 0: "
@@ -72,7 +73,7 @@ def write_windows(md, windows, X):
 def write_ensemble(out, ensemble, ewindows, found, X, rate_window, definition):
     lvl = int(round(ens.LEVEL * 100))
     t0, t1 = rate_window or (0.0, X)
-    with open(os.path.join(out, "ensemble.md"), "w") as f:
+    with replacing(os.path.join(out, "ensemble.md")) as f:
         f.write("Means over the seeds (random packings) of each variant, mass fraction and "
                 "pressure, +- the half-width of the %d %% Student-t interval (none for one "
                 "seed). M mean, the indices and the bed statistics: over the last %g s; "
@@ -102,7 +103,7 @@ def write_ensemble(out, ensemble, ewindows, found, X, rate_window, definition):
                         for r in ewindows if (r["variant"], r["wSmall"], r["pressure"]) == key}
                 f.write("| %s | %.2f | %g | " % key +
                         " | ".join(cell.get(e, "-") for e in edges) + " |\n")
-    with open(os.path.join(out, "findings.md"), "w") as f:
+    with replacing(os.path.join(out, "findings.md")) as f:
         f.write("%s as differences between ensembles (a - b, mean over seeds, +- "
                 "Welch's %d %% interval; for a contrast without b its mean and interval). "
                 "A sign is called only where the interval excludes zero; one seed gives a "
@@ -127,7 +128,7 @@ def write_variants(out, cases):
         if c["variant"] != BASELINE and c["variant"] not in seen and os.path.isfile(record):
             with open(record) as f:
                 seen[c["variant"]] = (c["case"], f.read())
-    with open(os.path.join(out, "variants.md"), "w") as f:
+    with replacing(os.path.join(out, "variants.md")) as f:
         f.write("Variants of this study (%s: the template as it is). Each case keeps its "
                 "edits in constant/variant; `dpmStudy <dir> -variant "
                 "<case>/constant/variant` reruns them.\n" % BASELINE)

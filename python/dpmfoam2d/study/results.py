@@ -8,11 +8,14 @@ figures. Used by bin/dpmStudy (-results)."""
 
 import fcntl
 import os
+import sys
 from collections import OrderedDict
 
 import numpy as np
 
 from . import definition as study_definition, ensemble as ens, verdicts
+from ..files import own_directory
+from .locks import LockError, open_lock
 from .cases import BASELINE, BED_STATISTICS, case_row, find_cases, say
 from .reports import write_csv, write_ensemble, write_summary, write_variants
 
@@ -101,16 +104,22 @@ def results(study_dir, X, rate_window=None, pictures=True, definition=None):
     """Remake <study_dir>/results from every case there, testing the
     findings of definition (a study.definition.Definition)."""
     out = os.path.join(study_dir, "results")
-    os.makedirs(out, exist_ok=True)
+    own_directory(out)
     # One at a time: two dpmStudy runs of a work queue that finish together
     # would write the same tables (and the cases' bed statistics) at once
-    with open(os.path.join(out, ".lock"), "w") as lock:
+    try:
+        lock = open_lock(os.path.join(out, ".lock"))
+    except LockError as e:
+        sys.exit("dpmStudy: %s" % e)
+    try:
         try:
             fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
             say("results: waiting for another dpmStudy making %s" % out)
             fcntl.flock(lock, fcntl.LOCK_EX)
         remake_results(study_dir, out, X, rate_window, pictures, definition)
+    finally:
+        os.close(lock)
 
 
 def remake_results(study_dir, out, X, rate_window, pictures, definition):

@@ -4,6 +4,7 @@
 settings, variants, locks), run here (study.jobs) or submitted to Slurm
 (study.slurm). The command line and its usage: study.command_line."""
 
+import fcntl
 import os
 import re
 import shutil
@@ -13,7 +14,9 @@ from .. import BIN_DIR
 from . import definition as study_definition
 from . import cases as study_cases, jobs as study_jobs, slurm as study_slurm
 from .foam_edit import foam_remove, foam_set
-from .jobs import Job, latest_complete_time, lock_holder, running_in, take_lock
+from ..files import own_directory, write_text
+from .jobs import Job, latest_complete_time, lock_holder, running_in
+from .locks import LockError, flock_holders, open_lock, take_lock
 from .variants import Variant
 
 
@@ -22,6 +25,11 @@ from .variants import Variant
 NOT_COPIED = re.compile(r"^([0-9][0-9.eE+-]*|[0-9.]+\.incomplete(\.[0-9]+)?|particles|"
                         r"postProcessing|images|log\..*|case\.foam|dynamicCode|\.dpmLock|"
                         r"polyMesh|packedBed.*|variants|studyDict)$")
+
+
+# The study's own lock: shared by its local runs, held alone by a -slurm
+# submission
+STUDY_LOCK = ".dpmStudy.lock"
 
 
 def say(*args):
@@ -38,9 +46,34 @@ def case_name(w, p, seed=None, variant=None):
         ("" if seed is None else "_seed%d" % seed)
 
 
+def locked(directory):
+    """take_lock, its refusal of a lock path that cannot be one an exit."""
+    try:
+        return take_lock(directory)
+    except LockError as e:
+        sys.exit("dpmStudy: %s" % e)
+
+
 def copy_template(template, dest):
     shutil.copytree(template, dest,
                     ignore=lambda d, names: [n for n in names if NOT_COPIED.match(n)])
+
+
+def make_dir(template, dest, fill):
+    """dest made whole or not at all: the template copied into a directory
+    of its own beside dest (a dot name, which no study lists), fill(it)
+    run there, then renamed to dest. A failed fill (a variant value
+    foamDictionary refuses) leaves nothing."""
+    tmp = os.path.join(os.path.dirname(dest), ".%s.making%d" % (os.path.basename(dest),
+                                                               os.getpid()))
+    shutil.rmtree(tmp, ignore_errors=True)
+    try:
+        copy_template(template, tmp)
+        fill(tmp)
+        os.rename(tmp, dest)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        raise
 
 
 class Study:
@@ -62,9 +95,9 @@ class Study:
         self.scale = self.variant.scaled(args.scale) if self.variant else args.scale
 
     def apply_variant(self, directory):
-        """The variant's edits, then -scale's particleScale (it includes the
-        variant's own)."""
-        self.variant.apply(directory)
+        """The variant's edits with -scale's particleScale (it includes the
+        variant's own) in place of the variant's, then that particleScale."""
+        self.variant.apply(directory, self.scale)
         if self.scale is not None:
             foam_set(os.path.join(directory, "constant", "caseSettings"),
                      "particleScale", self.scale)
@@ -109,16 +142,21 @@ class Study:
         if pid:
             sys.exit("dpmStudy: %s is being packed by process %d (another dpmStudy?): "
                      "run again when it has finished" % (bed, pid))
-        if not os.path.isdir(bed):
-            copy_template(self.template, bed)
-        lock = take_lock(bed)
+        def fill(d):
+            self.settings(d, w, seed=seed)
+            if self.variant and self.variant.shapes_bed():
+                self.apply_variant(d)     # after the settings, as in its cases
+        made = not os.path.isdir(bed)
+        if made:
+            own_directory(os.path.dirname(bed))
+            make_dir(self.template, bed, fill)
+        lock = locked(bed)
         if lock is None:
             sys.exit("dpmStudy: %s is being packed by %s: run again when it has finished"
                      % (bed, lock_holder(bed) or "another process"))
         try:
-            self.settings(bed, w, seed=seed)
-            if self.variant and self.variant.shapes_bed():
-                self.apply_variant(bed)     # after the settings, as in its cases
+            if not made:            # a bed whose packing did not end: today's settings
+                fill(bed)
         finally:
             os.close(lock)
         # Saved under a temporary name first: a packing killed half-way
@@ -147,16 +185,17 @@ class Study:
         name = os.path.basename(case)
         existed = os.path.isdir(case)
         if not existed:
-            copy_template(self.template, case)
-            self.settings(case, w, p, seed)
-            # before the variant: foamDictionary writes particleProperties
-            # with its #includeIfPresent "packedBed" expanded as it is then
-            with open(os.path.join(case, "constant", "packedBed"), "w") as f:
-                f.write('// The bed of this mass fraction, packed once by dpmStudy\n'
-                        'file "$FOAM_CASE/../beds/%s/constant/packedBed.state";\n'
-                        % self.bed_of(w, seed))
-            if self.variant:
-                self.apply_variant(case)
+            def fill(d):
+                self.settings(d, w, p, seed)
+                # before the variant: foamDictionary writes particleProperties
+                # with its #includeIfPresent "packedBed" expanded as it is then
+                write_text(os.path.join(d, "constant", "packedBed"),
+                           '// The bed of this mass fraction, packed once by dpmStudy\n'
+                           'file "$FOAM_CASE/../beds/%s/constant/packedBed.state";\n'
+                           % self.bed_of(w, seed))
+                if self.variant:
+                    self.apply_variant(d)
+            make_dir(self.template, case, fill)
         else:
             self.check_variant(case)
             queued = self.slurm_active(case)
@@ -168,7 +207,7 @@ class Study:
                 say("%-16s skipped: process %d runs in it (another dpmStudy?)" % (name, pid))
                 return None
         # the case's lock while it is set up: no solver starts in it meanwhile
-        lock = take_lock(case)
+        lock = locked(case)
         if lock is None:
             say("%-16s skipped: %s holds its lock" % (name, lock_holder(case) or "another process"))
             return None
@@ -244,10 +283,7 @@ class Study:
         results follow the copy); a study made with another one is refused."""
         path = os.path.join(self.dir, study_definition.FILE_NAME)
         if not os.path.isfile(path):
-            tmp = "%s.tmp%d" % (path, os.getpid())
-            with open(tmp, "w") as f:
-                f.write(self.definition.text)
-            os.replace(tmp, path)
+            write_text(path, self.definition.text)
             return
         with open(path) as f:
             if f.read() != self.definition.text:
@@ -256,7 +292,32 @@ class Study:
                          "template's, or use another study directory"
                          % (path, self.definition.path, path))
 
+    def study_lock(self, exclusive):
+        """The study's lock (STUDY_LOCK), shared by its local runs, held
+        alone by a submission; None while the other kind holds it."""
+        try:
+            fd = open_lock(os.path.join(self.dir, STUDY_LOCK))
+        except LockError as e:
+            sys.exit("dpmStudy: %s" % e)
+        try:
+            fcntl.flock(fd, (fcntl.LOCK_EX if exclusive else fcntl.LOCK_SH) | fcntl.LOCK_NB)
+        except BlockingIOError:
+            os.close(fd)
+            return None
+        return fd
+
     def run(self):
+        os.makedirs(self.dir, exist_ok=True)
+        lock = self.study_lock(exclusive=False)
+        if lock is None:
+            sys.exit("dpmStudy: a -slurm submission of %s is under way (it holds %s): run "
+                     "again when it has ended" % (self.dir, os.path.join(self.dir, STUDY_LOCK)))
+        try:
+            self.run_locked()
+        finally:
+            os.close(lock)
+
+    def run_locked(self):
         bed_jobs, case_jobs, queued = self.prepare()
         if queued:
             sys.exit("dpmStudy: Slurm packs beds of this study (tasks %s): run again when "
@@ -264,25 +325,30 @@ class Study:
         jobs = bed_jobs + case_jobs
         if not jobs:
             return
-        lock = os.path.join(self.dir, ".dpmStudy.running")
-        os.makedirs(lock, exist_ok=True)
-        mine = os.path.join(lock, str(os.getpid()))
-        open(mine, "w").close()
-        try:
-            study_jobs.run_here(self, jobs)
-        finally:
-            os.remove(mine)
+        study_jobs.run_here(self, jobs)
 
     def submit(self, sbatch_options, results_args):
-        """The jobs as Slurm job arrays (see study.slurm)."""
+        """The jobs as Slurm job arrays (see study.slurm), unless a local
+        run holds the study's lock (the lock decides: a killed run leaves
+        nothing that could name another process later)."""
         study_slurm.check_sbatch()
-        lock = os.path.join(self.dir, ".dpmStudy.running")
-        others = [pid for pid in (os.listdir(lock) if os.path.isdir(lock) else [])
-                  if pid.isdigit() and os.path.isdir("/proc/" + pid)]
-        if others:
-            sys.exit("dpmStudy: a local dpmStudy (process %s) runs this study; stop it "
-                     "(its cases continue on the cluster) and submit again; nothing "
-                     "submitted" % ", ".join(others))
+        lock = None
+        if os.path.isdir(self.dir):
+            lock = self.study_lock(exclusive=True)
+            if lock is None:
+                pids = flock_holders(os.path.join(self.dir, STUDY_LOCK))
+                sys.exit("dpmStudy: a local dpmStudy (%s) runs this study (it holds %s); "
+                         "stop it (its cases continue on the cluster) and submit again; "
+                         "nothing submitted"
+                         % ("process " + ", ".join(map(str, pids)) if pids else "on another host",
+                            os.path.join(self.dir, STUDY_LOCK)))
+        try:
+            self.submit_locked(sbatch_options, results_args)
+        finally:
+            if lock is not None:
+                os.close(lock)
+
+    def submit_locked(self, sbatch_options, results_args):
         bed_jobs, case_jobs, queued = self.prepare()
         if not bed_jobs and not case_jobs:
             say("dpmStudy: nothing to submit")

@@ -17,6 +17,7 @@ import shutil
 import subprocess
 import sys
 import time
+from ..files import own_directory, replacing
 
 RECORD = ".dpmStudy.slurm"
 ACTIVE = ("PENDING", "RUNNING", "CONFIGURING", "COMPLETING", "SUSPENDED", "REQUEUED",
@@ -115,9 +116,9 @@ def submit(study, beds, cases, bed_deps, sbatch_options, results_args):
     bed_deps: Slurm ids of beds already pending or running."""
     project = os.path.dirname(study.here)
     slurm = os.path.join(study.dir, "slurm")
-    os.makedirs(slurm, exist_ok=True)
+    own_directory(slurm)
     task = os.path.join(slurm, "task.sh")
-    with open(task, "w") as f:
+    with replacing(task) as f:
         f.write(ARRAY_TASK)
     stamp = time.strftime("%Y%m%d-%H%M%S")
     name = os.path.basename(study.dir)
@@ -125,10 +126,10 @@ def submit(study, beds, cases, bed_deps, sbatch_options, results_args):
 
     def array(jobs, kind, deps):
         for j in jobs:
-            with open(os.path.join(j.dir, "dpmStudy.sh"), "w") as f:
+            with replacing(os.path.join(j.dir, "dpmStudy.sh")) as f:
                 f.write(task_script(j, project))
         listing = os.path.join(slurm, "%s_%s.list" % (stamp, kind))
-        with open(listing, "w") as f:
+        with replacing(listing) as f:
             f.write("".join(j.dir + "\n" for j in jobs))
         args = ["--job-name", "%s-%s" % (name, kind), "--array", "0-%d" % (len(jobs) - 1),
                 "--output", out]
@@ -136,7 +137,7 @@ def submit(study, beds, cases, bed_deps, sbatch_options, results_args):
             args += ["--dependency", "afterok:" + ":".join(deps), "--kill-on-invalid-dep=yes"]
         job = sbatch(args + sbatch_options + [task, listing], kind)
         for i, j in enumerate(jobs):
-            with open(os.path.join(j.dir, RECORD), "w") as f:
+            with replacing(os.path.join(j.dir, RECORD)) as f:
                 f.write("%s_%d\n" % (job, i))
         return job
 
@@ -151,7 +152,7 @@ def submit(study, beds, cases, bed_deps, sbatch_options, results_args):
     say("dpmStudy: cases submitted as Slurm job array %s (%d tasks%s)" % (
         casesJob, len(cases), ", after " + ", ".join(deps) if deps else ""))
     script = os.path.join(slurm, "results.sh")
-    with open(script, "w") as f:
+    with replacing(script) as f:
         f.write("#!/bin/bash\n# Written by dpmStudy: results/ once the cases have run\n"
                 ". %s || exit 1\nexec %s\n" % (
                     shlex.quote(os.path.join(project, "etc", "bashrc")),
@@ -161,7 +162,7 @@ def submit(study, beds, cases, bed_deps, sbatch_options, results_args):
                          "afterany:" + casesJob, "--kill-on-invalid-dep=yes",
                          "--output", os.path.join(slurm, "%x_%j.out")] + sbatch_options
                         + [script], "results job")
-    with open(os.path.join(slurm, "results.job"), "w") as f:
+    with replacing(os.path.join(slurm, "results.job")) as f:
         f.write(resultsJob + "\n")
     say("dpmStudy: results/ submitted as Slurm job %s (after %s)" % (resultsJob, casesJob))
 
@@ -200,8 +201,10 @@ def status(study, running_in, latest_complete_time):
     from . import cases as study_cases
     states = queue_states()
     beds_dir = os.path.join(study.dir, "beds")
+    # (a dot name: a bed being made)
     dirs = [("beds/" + b, os.path.join(beds_dir, b), "bed")
-            for b in sorted(os.listdir(beds_dir))] if os.path.isdir(beds_dir) else []
+            for b in sorted(os.listdir(beds_dir)) if not b.startswith(".")] \
+        if os.path.isdir(beds_dir) else []
     dirs += [(c["case"], c["dir"], "case") for c in study_cases.find_cases(study.dir)]
     if not dirs:
         say("dpmStudy: no beds or cases in %s" % study.dir)

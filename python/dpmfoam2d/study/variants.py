@@ -9,6 +9,7 @@ import re
 import sys
 
 from .foam_edit import foam_has, foam_remove, foam_set
+from ..files import replacing
 
 
 VARIANT_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9.-]*$")
@@ -43,6 +44,21 @@ class Variant:
         if not self.edits:
             sys.exit("dpmStudy: variant %s has no edits" % path)
 
+    def inside(self, directory, n, f, what):
+        """directory/f resolved (links followed), refused outside directory:
+        a variant edits only the files of the case it makes."""
+        if os.path.isabs(f):
+            sys.exit("dpmStudy: %s line %d: %s is an absolute path; a variant names the "
+                     "files of a case relative to it (system/..., constant/...)"
+                     % (self.path, n, f))
+        root = os.path.realpath(directory)
+        target = os.path.realpath(os.path.join(root, f))
+        if not target.startswith(root + os.sep):
+            sys.exit("dpmStudy: %s line %d: %s lies outside %s (it resolves to %s); a "
+                     "variant edits only the files of the case it makes"
+                     % (self.path, n, f, what, target))
+        return target
+
     @staticmethod
     def recorded_name(text):
         """A case's record starts with '# variant <name>'."""
@@ -53,7 +69,7 @@ class Variant:
         """Every edit names a file of the template and an entry it has (a
         misspelt entry would otherwise be added, not changed)."""
         for n, f, entry, value in self.edits:
-            target = os.path.join(template, f)
+            target = self.inside(template, n, f, "the template")
             if not os.path.isfile(target):
                 sys.exit("dpmStudy: %s line %d: the template has no file %s"
                          % (self.path, n, f))
@@ -101,16 +117,30 @@ class Variant:
               % (scale, self.name, factor, self.path, n, scale * factor), flush=True)
         return scale * factor
 
-    def apply(self, case):
+    def apply(self, case, particle_scale=None):
+        """The edits in case; particle_scale (-scale's, the variant's own
+        included) replaces the variant's particleScale."""
         # caseSettings first: foamDictionary writes the other files with the
         # values they include from it expanded, as they are at that moment
+        # (particleProperties' #eval'd masses and fractions: so the final
+        # particleScale must be in caseSettings before they are written)
         edits = sorted(self.edits, key=lambda e: os.path.normpath(e[1]) != "constant/caseSettings")
         for n, f, entry, value in edits:
-            if value == "-remove":
-                foam_remove(os.path.join(case, f), entry)
-            else:
-                foam_set(os.path.join(case, f), entry, value)
-        with open(os.path.join(case, "constant", "variant"), "w") as f:
+            if particle_scale is not None and entry == "particleScale" and \
+                    os.path.normpath(f) == "constant/caseSettings":
+                value = repr(float(particle_scale))
+            target = self.inside(case, n, f, "the case")
+            try:
+                if value == "-remove":
+                    foam_remove(target, entry)
+                else:
+                    foam_set(target, entry, value)
+            except RuntimeError as e:
+                m = re.search(r"FATAL (?:IO )?ERROR:?\s*(\S.*)", str(e))
+                sys.exit("dpmStudy: %s line %d: foamDictionary cannot set %s %s to '%s'%s; "
+                         "correct the line"
+                         % (self.path, n, f, entry, value, ": " + m.group(1) if m else ""))
+        with replacing(os.path.join(case, "constant", "variant")) as f:
             f.write(self.record())
 
     def record(self):

@@ -16,6 +16,7 @@ import os
 from collections import OrderedDict
 
 from . import ensemble as ens
+from ..files import replacing
 
 
 def opposite(sign):
@@ -76,7 +77,7 @@ def variant_effects(found, groups, baseline_name):
 def write_verdicts(out, effects, level):
     """verdicts.md in the results directory `out`."""
     lvl = int(round(level * 100))
-    with open(os.path.join(out, "verdicts.md"), "w") as f:
+    with replacing(os.path.join(out, "verdicts.md")) as f:
         f.write("What each variant does to the paper's findings, against the baseline's "
                 "seeds. value: the variant's contrast (findings.md); shift: the variant's "
                 "contrast minus the baseline's, +- its %d %% interval (Welch-Satterthwaite; "
