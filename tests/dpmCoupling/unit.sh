@@ -5,7 +5,9 @@
 # check states its source and tolerance.
 #   unit.sh <workDir> [application]   default Test-dpmCoupling; also
 #   Test-sphereColumnOverlap (the slab mode's sphere-column volume against
-#   textbook limits, an independent quadrature and Monte Carlo). Both are
+#   textbook limits, an independent quadrature and Monte Carlo) and
+#   Test-sphereBoxOverlap (the sphere-box volume against textbook limits,
+#   the column volume and a quadrature of disc-rectangle areas). All are
 #   built by Allwmake.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 app="${2:-Test-dpmCoupling}"
