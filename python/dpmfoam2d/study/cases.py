@@ -112,7 +112,8 @@ def case_row(c, X, rate_window):
     row["MsampleFinal"] = L["M"][-1] if L is not None and len(L["M"]) else np.nan
     row["MsampleMean"] = L["M"][L["Time"] >= L["Time"][-1] - X - 1e-9].mean() \
         if L is not None and len(L["M"]) else np.nan
-    row.update(bed_statistics(case, X))
+    row.update(bed_statistics(case, X, remake=not os.path.isfile(
+        os.path.join(case, "constant", "archivedCase"))))
     windows = [OrderedDict(case=c["case"], variant=c["variant"], seed=c["seed"] or "",
                            wSmall=c["wSmall"], pressure=c["pressure"], **win)
                for win in time_windows(t, M["M"], tS, S, X)]
@@ -126,13 +127,15 @@ def case_row(c, X, rate_window):
     return row, windows
 
 
-def bed_statistics(case, X):
-    """Means over the last X s of dpmBedStatistics' tables (run first)."""
-    r = subprocess.run([os.path.join(BIN_DIR, "dpmBedStatistics"), case],
-                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                       universal_newlines=True)
-    if r.returncode != 0:
-        say("results: %s" % r.stdout.strip())
+def bed_statistics(case, X, remake=True):
+    """Means over the last X s of dpmBedStatistics' tables (remade first,
+    unless the case is a summary of a run elsewhere, which has only them)."""
+    if remake:
+        r = subprocess.run([os.path.join(BIN_DIR, "dpmBedStatistics"), case],
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                           universal_newlines=True)
+        if r.returncode != 0:
+            say("results: %s" % r.stdout.strip())
     out = {k: np.nan for k in BED_STATISTICS}
     for name in ("bed.dat", "particles.dat"):
         T = read_postprocessing(case, "bedStatistics", name)

@@ -11,6 +11,7 @@ packings (seeds) and with named variants of the model.
            [-results] [-noPictures] [-scale S] [-settleTime T]
            [-writeInterval T] [-template DIR] [-listVariants]
            [-status] [-slurm [-- <sbatch options>]]
+           [-export <archive.tar.gz>] [-import <study dir or archive> ...]
 
 The template's studyDict defines the study: the default matrix (-w, -p),
 the values allowed, and the findings that results/ tests (differences
@@ -100,6 +101,18 @@ the DEM threads). A task that reached its time limit continues when the
 study is submitted again; beds and cases already pending or running are not
 submitted twice. Logs: <case>/log.dpmFoam2D, <case>/log.slurm (task starts
 and ends), <study>/slurm/<study>-cases_<job>_<task>.out.
+-export A.tar.gz writes an archive of the study: its studyDict and a small
+summary case of each finished case (its settings, its dictionaries, the
+tables results/ reads, the head of its log and the builds it ran with,
+constant/studyBuild); -import <other study dir or archive> ... adds the
+finished cases found there to <studyDir> as summary cases (marked by
+constant/archivedCase), which results/ reads like its own and the runner
+counts as finished, never running them again. An import refuses, naming the
+difference, a study of another studyDict and a case whose settings (other
+than its w, pressure and seed) or dictionaries differ from the study's
+cases; a case of the same name with the same settings is kept as it is.
+-import then remakes results/; run the study as usual for the cases still
+to run.
 -rateWindow T0 T1: the window (T0, T1] of M/M(0) that findings.md compares
 for the segregation rate (finding 4); default the first -mean window.
 -scale, -settleTime and -writeInterval make a reduced study for tests
@@ -114,7 +127,7 @@ import sys
 
 from .. import PROJECT_DIR
 from . import definition as study_definition
-from . import results as study_results, slurm as study_slurm
+from . import archive as study_archive, results as study_results, slurm as study_slurm
 from .jobs import latest_complete_time, path_problem, running_in
 from .locks import LockError
 from .runner import Study, say
@@ -162,6 +175,10 @@ def main():
                     help="state, job and simulated time (ETA if running) of every bed and"
                          " case, and the simulated time left, then exit")
     ap.add_argument("-results", action="store_true", help="only remake results/")
+    ap.add_argument("-export", metavar="ARCHIVE",
+                    help="write the study's finished cases' summaries into ARCHIVE (.tar.gz)")
+    ap.add_argument("-import", dest="importFrom", nargs="+", metavar="SOURCE",
+                    help="add the finished cases of other study directories or archives")
     ap.add_argument("-noPictures", action="store_true", help="no snapshots")
     ap.add_argument("-scale", type=float, help="fraction of Table 3's counts (tests)")
     ap.add_argument("-settleTime", type=float, help="settling time (s) (tests)")
@@ -193,9 +210,14 @@ def main():
         problem = path_problem(what, path)
         if problem:
             sys.exit("dpmStudy: " + problem)
-    for name in ("results", "status"):
+    for name in ("results", "status", "export"):
         if getattr(args, name) and not os.path.isdir(args.studyDir):
             ap.error("-%s: no study directory %s" % (name, args.studyDir))
+    if args.export or args.importFrom:
+        study_archive.command(args, say)
+        if args.export and not args.importFrom:
+            return
+        args.results = True
     if not os.path.isdir(args.template):
         ap.error("-template %s: no such directory" % args.template)
     if args.listVariants:

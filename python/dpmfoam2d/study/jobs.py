@@ -26,14 +26,28 @@ def say(*args):
     print(*args, flush=True)
 
 
+def ends_with_divider(path):
+    """Whether a field file ends with the divider OpenFOAM writes last (a
+    file cut short lacks it)."""
+    with open(path, "rb") as f:
+        f.seek(0, os.SEEK_END)
+        f.seek(max(f.tell() - 256, 0))
+        last = f.read().rstrip().rsplit(b"\n", 1)[-1]
+    return last.startswith(b"// *") and last.endswith(b"//") and len(last) > 6
+
+
 def complete(case, name):
     """The solver's rule (restart/incompleteTimes.C): U, p_rgh and the
-    particle state, and the concurrent schedule's reaction whole or absent."""
+    particle state, the concurrent schedule's reaction whole or absent, and
+    no field file cut short."""
     d = os.path.join(case, name)
     exchange = [os.path.isfile(os.path.join(d, f)) for f in ("Kc", "Fp", "Ustar")]
     return (all(os.path.isfile(os.path.join(d, f))
                 for f in ("U", "p_rgh", os.path.join("uniform", "dem.state")))
-            and (all(exchange) or not any(exchange)))
+            and (all(exchange) or not any(exchange))
+            and all(ends_with_divider(os.path.join(d, f))
+                    for f in ("U", "p_rgh", "Kc", "Fp", "Ustar")
+                    if os.path.isfile(os.path.join(d, f))))
 
 
 def latest_complete_time(case, set_aside=False):

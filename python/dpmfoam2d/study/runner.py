@@ -12,7 +12,8 @@ import sys
 
 from .. import BIN_DIR
 from . import definition as study_definition
-from . import cases as study_cases, jobs as study_jobs, slurm as study_slurm
+from . import archive as study_archive, cases as study_cases, jobs as study_jobs, \
+    slurm as study_slurm
 from .foam_edit import foam_remove, foam_set
 from ..files import own_directory, write_text
 from .jobs import Job, latest_complete_time, lock_holder, running_in
@@ -176,6 +177,9 @@ class Study:
             os.path.join(case, "constant", "caseSettings"))["endTime"])
 
     def finished(self, case):
+        if study_archive.is_summary(case):
+            t = study_archive.summary_time(case)
+            return t is not None and t >= self.end_time(case) - 1e-9
         t = latest_complete_time(case)
         return t is not None and os.path.isfile(os.path.join(case, "log.dpmFoam2D")) \
             and t >= self.end_time(case) - 1e-9
@@ -196,6 +200,15 @@ class Study:
                 if self.variant:
                     self.apply_variant(d)
             make_dir(self.template, case, fill)
+        elif study_archive.is_summary(case):
+            # run elsewhere and imported: its tables stand for it
+            self.check_variant(case)
+            if not self.finished(case):
+                sys.exit("dpmStudy: %s is the summary of a run that ended at %g s, before "
+                         "this study's endTime %g s: it cannot be continued here; remove it "
+                         "to run the case anew" % (case, study_archive.summary_time(case),
+                                                    self.end_time(case)))
+            return None
         else:
             self.check_variant(case)
             queued = self.slurm_active(case)
@@ -217,6 +230,7 @@ class Study:
             if self.finished(case):
                 return None
             latest_complete_time(case, set_aside=True)
+            study_archive.record_build(case)
         finally:
             os.close(lock)
         steps = ["set -e"]
