@@ -14,7 +14,7 @@ for page in index.html user-guide/dictionaries.html user-guide/commands.html the
     [ -s "$workDir/site/$page" ] || fail "no $page in the site"
 done
 grep -q "dpmStudy" "$workDir/site/user-guide/commands.html" || fail "the commands page lacks dpmStudy"
-/usr/bin/python3 - "$workDir/site" theory/paper-model.html theory/drag-closures.html theory/slab-mode.html \
+/usr/bin/python3 - "$workDir/site" theory/paper-model.html theory/drag-closures.html theory/slab-mode.html model.html \
         <<'PYTHON' || fail "the math of the site (above)"
 import html.parser
 import os
