@@ -23,13 +23,15 @@ Modules:
 
 import os
 
+__version__ = "0.1.0"
+
 from .particles import FIELDS, list_times, nearest_time, read as particles_at, read_particles
 from .tables import lacey, read_dat, read_postprocessing, segregation, study_table
 from .fields import cell_geometry, internal_field, time_dirs
 
 __all__ = ["FIELDS", "list_times", "nearest_time", "particles_at", "read_particles", "lacey",
            "read_dat", "read_postprocessing", "segregation", "study_table", "cell_geometry",
-           "internal_field", "time_dirs", "PROJECT_DIR", "BIN_DIR"]
+           "internal_field", "time_dirs", "PROJECT_DIR", "BIN_DIR", "__version__"]
 
 # The project's checkout (the package is its python/dpmfoam2d)
 PROJECT_DIR = os.path.realpath(os.path.join(os.path.dirname(__file__), "..", ".."))
