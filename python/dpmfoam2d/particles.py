@@ -25,6 +25,7 @@ geometry for the picture tests).
 """
 
 import os
+import subprocess
 
 import numpy as np
 import h5py
@@ -79,6 +80,18 @@ def check_case(case):
                          "postProcessing")):
         raise FileNotFoundError("%s is not a dpmFoam2D case (no system/controlDict, "
                                 "particles/ or postProcessing/)" % case)
+
+
+def class_names(case):
+    """The class names of constant/particleProperties in their order (the
+    particle files' class indices), or [] when foamDictionary cannot say."""
+    path = os.path.join(case, "constant", "particleProperties")
+    try:
+        out = subprocess.run(["foamDictionary", "-entry", "classes", "-keywords", path],
+                             capture_output=True, text=True, check=True).stdout
+    except (OSError, subprocess.CalledProcessError):
+        return []
+    return out.split()
 
 
 def particles_dir(case):

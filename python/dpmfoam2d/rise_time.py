@@ -26,7 +26,6 @@ Writes postProcessing/riseTime/0/
 import argparse
 import math
 import os
-import subprocess
 import sys
 
 import numpy as np
@@ -34,18 +33,6 @@ import numpy as np
 from . import particles as pio
 
 OUT = os.path.join("postProcessing", "riseTime", "0")
-
-
-def class_names(case):
-    """The class names of constant/particleProperties in their order (the
-    particle files' class indices), or [] when foamDictionary cannot say."""
-    path = os.path.join(case, "constant", "particleProperties")
-    try:
-        out = subprocess.run(["foamDictionary", "-entry", "classes", "-keywords", path],
-                             capture_output=True, text=True, check=True).stdout
-    except (OSError, subprocess.CalledProcessError):
-        return []
-    return out.split()
 
 
 def surface_heights(y, in_bed, fractions):
@@ -120,7 +107,7 @@ def main(argv=None):
         files = pio.list_times(a.case)
         if not files:
             refuse("%s has no particle files <time>.h5 in particles/: run dpmFoam2D first" % a.case)
-        names = class_names(a.case)
+        names = pio.class_names(a.case)
         if a.cls is None:
             counts = np.bincount(pio.read_particles(files[0][1])["class"])
             present = np.flatnonzero(counts)

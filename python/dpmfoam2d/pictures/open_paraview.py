@@ -27,6 +27,19 @@ from . import tools
 SCENE = os.path.join(os.path.dirname(os.path.realpath(__file__)), "paraview_scene.py")
 
 
+def class_labels(case, path):
+    """'small 1.5 mm', ...: each class's name (particleProperties, in its
+    order) and its particles' mean diameter in the particle file path."""
+    p = pio.read_particles(path)
+    names = pio.class_names(case)
+    out = []
+    for k in range(int(p["class"].max()) + 1 if len(p["class"]) else 0):
+        d = p["diameter"][p["class"] == k]
+        name = names[k] if k < len(names) else "class %d" % k
+        out.append("%s %.3g mm" % (name, 1e3 * d.mean()) if len(d) else name)
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser(prog="dpmParaView", description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -54,7 +67,8 @@ def main():
         sys.exit("dpmParaView: %s; the scene would show another time than %g s" % (problem, t))
     tools.ensure_foam(args.case)
     env = dict(os.environ, DPM_PARAVIEW_CASE=os.path.abspath(args.case),
-               DPM_PARAVIEW_HEIGHT=str(args.height))
+               DPM_PARAVIEW_HEIGHT=str(args.height),
+               DPM_PARAVIEW_CLASSES="\n".join(class_labels(args.case, path)))
     if args.time is not None:
         env["DPM_PARAVIEW_TIME"] = repr(args.time)
 
