@@ -12,12 +12,30 @@
 # <setup> runs in the case first; <command> (default dpmFoam2D) is run
 # there with a 180-s limit, its output in log.command. The names must be
 # distinct; at least minimumRows rows in all (50).
+#   badInput.sh <workDir> [<table> ...]   the tables badInput/<table>.cases
+#                                         (default: all, and the row count)
+# ctest runs one table a test (faults.badInput.<table>), so that they share
+# the cores, and the count and the names' uniqueness over all tables apart
+# (faults.badInput.rows: badInput.sh <workDir> -count).
 # BADINPUT_ONLY=<regex> runs only the rows whose name matches (a check of
 # one row while editing it; the count is then not checked).
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
+. "$testsDir/faults/stateFunctions"
+shift
+tables=("$@")
 
 minimumRows=50
+if [ "${tables[0]:-}" = -count ]
+then
+    names=$(cat "$testsDir"/faults/badInput/*.cases | sed -n 's/^badInput \([^ ]*\) .*/\1/p')
+    n=$(echo "$names" | wc -l)
+    twice=$(echo "$names" | sort | uniq -d | tr '\n' ' ')
+    [ -z "$twice" ] || fail "row names used twice: $twice"
+    [ "$n" -ge "$minimumRows" ] || fail "only $n rows (at least $minimumRows wanted)"
+    pass "$n bad-input rows over $(ls "$testsDir"/faults/badInput/*.cases | wc -l) tables, each name once"
+    exit 0
+fi
 makeCase "$workDir/template"
 nFailed=0
 nRows=0
@@ -55,13 +73,24 @@ badInput()
     ) || nFailed=$((nFailed + 1))
 }
 
-for table in "$testsDir"/faults/badInput/*.cases
+if [ ${#tables[@]} = 0 ]
+then
+    for table in "$testsDir"/faults/badInput/*.cases
+    do
+        t=${table##*/}
+        tables+=("${t%.cases}")
+    done
+    counted=yes
+fi
+for table in "${tables[@]}"
 do
-    echo "== ${table##*/}"
-    . "$table"
+    [ -f "$testsDir/faults/badInput/$table.cases" ] || fail "no table badInput/$table.cases"
+    echo "== $table.cases"
+    . "$testsDir/faults/badInput/$table.cases"
 done
 
 echo "$nRows rows"
 [ "$nFailed" = 0 ] || fail "$nFailed of $nRows bad inputs were not reported as they should be"
-[ -n "${BADINPUT_ONLY:-}" ] || [ "$nRows" -ge "$minimumRows" ] || fail "only $nRows rows (at least $minimumRows wanted)"
+[ -n "${BADINPUT_ONLY:-}" ] || [ -z "${counted:-}" ] || [ "$nRows" -ge "$minimumRows" ] \
+    || fail "only $nRows rows (at least $minimumRows wanted)"
 pass "every one of $nRows bad inputs gives its message"
