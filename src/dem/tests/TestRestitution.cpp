@@ -114,7 +114,9 @@ TEST(Restitution, AtThePaperTimeStepAndConverging)
         for (double n : {10.0, 25.0, 50.0, 100.0}) {
             const double e = headOn(c.a, c.b, tc / n).e;
             std::printf(" %8.5f", e);
-            if (n >= 50.0) EXPECT_LT(std::abs(e - 0.97), firstOrder / n) << c.name << " tc/" << n;
+            if (n >= 50.0) {
+                EXPECT_LT(std::abs(e - 0.97), firstOrder / n) << c.name << " tc/" << n;
+            }
         }
         std::printf("\n");
         ASSERT_GE(tc / 1e-5, 10.0) << c.name;   // the paper's step inside the safe bound

@@ -111,7 +111,9 @@ TEST(StepBound, MeasuredTable)
             EXPECT_LT(std::abs(p.e - eLaw), 0.1 * eLaw) << "dt/t_c " << ratio;
             EXPECT_TRUE(atRest) << "dt/t_c " << ratio;
         }
-        if (ratio >= 0.5) EXPECT_FALSE(atRest) << "dt/t_c " << ratio;
+        if (ratio >= 0.5) {
+            EXPECT_FALSE(atRest) << "dt/t_c " << ratio;
+        }
     }
 }
 
