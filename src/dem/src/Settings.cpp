@@ -1,6 +1,5 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "dem/ContactLaw.hpp"
 #include "dem/System.hpp"
 
 #include <algorithm>
@@ -54,109 +53,6 @@ std::string className(const Settings& s, int k)
 
 } // namespace
 
-namespace {
-
-constexpr double pi = 3.14159265358979323846;
-
-double classMass(const ParticleClass& c)
-{
-    return c.density * pi * c.diameter * c.diameter * c.diameter / 6.0;
-}
-
-/// body(lighter class, its mass, mEff, R*, E*) for every pair of classes and every class on
-/// a wall, the kinds of Hertz contact.
-template <class Body>
-void forEachHertzContact(const Settings& s, const Body& body)
-{
-    const ContactSettings& c = s.contact;
-    const std::size_t n = s.classes.size();
-    for (std::size_t a = 0; a < n; ++a) {
-        const ParticleClass& ca = s.classes[a];
-        const double ma = classMass(ca);
-        const double ra = 0.5 * ca.diameter;
-        for (std::size_t b = a; b < n; ++b) {
-            const ParticleClass& cb = s.classes[b];
-            const double mb = classMass(cb);
-            const double rb = 0.5 * cb.diameter;
-            body(static_cast<int>(ma <= mb ? a : b), std::min(ma, mb), ma * mb / (ma + mb),
-                 ra * rb / (ra + rb),
-                 effectiveYoungsModulus(ca.youngsModulus, ca.poissonRatio, cb.youngsModulus,
-                                        cb.poissonRatio));
-        }
-        body(static_cast<int>(a), ma, ma, ra,
-             effectiveYoungsModulus(ca.youngsModulus, ca.poissonRatio, c.wallYoungsModulus,
-                                    c.wallPoissonRatio));
-    }
-}
-
-} // namespace
-
-std::string contactLawName(ContactLawType law)
-{
-    return law == ContactLawType::hertzMindlin ? "HertzMindlin" : "linear";
-}
-
-ContactLawType contactLawFromName(const std::string& name)
-{
-    for (ContactLawType law : {ContactLawType::linear, ContactLawType::hertzMindlin}) {
-        if (name == contactLawName(law)) return law;
-    }
-    throw Error("contactLaw '" + name + "' is not one of: linear, HertzMindlin");
-}
-
-double timeStepBound(const Settings& settings, int* smallestClass)
-{
-    int kMin = 0;
-    double bound = INFINITY;
-    if (settings.contact.law == ContactLawType::hertzMindlin) {
-        const double v = settings.contact.impactSpeed;
-        forEachHertzContact(settings, [&](int k, double m, double mEff, double rEff, double eStar) {
-            const double deltaMax = std::pow(15.0 * mEff * v * v / (16.0 * eStar * std::sqrt(rEff)), 0.4);
-            const double stiffness = 2.0 * eStar * std::sqrt(rEff * deltaMax);
-            const double b = 2.0 * pi / 5.0 * std::sqrt(m / stiffness);
-            if (b < bound) {
-                bound = b;
-                kMin = k;
-            }
-        });
-    } else {
-        double mMin = INFINITY;
-        for (std::size_t k = 0; k < settings.classes.size(); ++k) {
-            const double m = classMass(settings.classes[k]);
-            if (m < mMin) {
-                mMin = m;
-                kMin = static_cast<int>(k);
-            }
-        }
-        bound = 2.0 * pi / 5.0 * std::sqrt(mMin / settings.contact.kn);
-    }
-    if (smallestClass) *smallestClass = kMin;
-    return bound;
-}
-
-double pairContactTime(const Settings& settings)
-{
-    const ContactSettings& c = settings.contact;
-    if (c.law == ContactLawType::hertzMindlin) {
-        double tc = INFINITY;
-        forEachHertzContact(settings, [&](int, double, double mEff, double rEff, double eStar) {
-            tc = std::min(tc, hertzContactTime(mEff, rEff, eStar, c.impactSpeed));
-        });
-        return tc;
-    }
-    int k = 0;
-    timeStepBound(settings, &k);
-    const double mEff = 0.5 * classMass(settings.classes[k]);
-    return linearContactDuration(mEff, c.kn, dampingFromRestitution(mEff, c.kn, c.restitution));
-}
-
-// Measured with the paper's particles (TestStepBound; docs/model.md): at dt = t_c/10 a
-// head-on pair's restitution is within 1 %; at 0.25 t_c within 5 % and a settling bed comes
-// to rest; above 0.4 t_c the bed does not (0.45 t_c: overlaps double; 0.55 t_c, just under
-// eq. 7's bound: particles thrown out of the box).
-double safeTimeStep(const Settings& settings) { return 0.1 * pairContactTime(settings); }
-double stableTimeStep(const Settings& settings) { return 0.25 * pairContactTime(settings); }
-
 long subStepCount(double dtOuter, double dt)
 {
     const double nearest = std::round(dtOuter / dt);
@@ -175,6 +71,19 @@ std::vector<int> classesLargestFirst(const Settings& settings)
         return settings.classes[a].diameter > settings.classes[c].diameter;
     });
     return order;
+}
+
+std::string contactLawName(ContactLawType law)
+{
+    return law == ContactLawType::hertzMindlin ? "HertzMindlin" : "linear";
+}
+
+ContactLawType contactLawFromName(const std::string& name)
+{
+    for (ContactLawType law : {ContactLawType::linear, ContactLawType::hertzMindlin}) {
+        if (name == contactLawName(law)) return law;
+    }
+    throw Error("contactLaw '" + name + "' is not one of: linear, HertzMindlin");
 }
 
 void validateSettings(const Settings& s)
@@ -260,18 +169,7 @@ void validateSettings(const Settings& s)
     }
 
     requirePositive(s.dt, "dt");
-    int kMin = 0;
-    const double bound = timeStepBound(s, &kMin);
-    if (s.dt > bound) {
-        const std::string stiffness = c.law == ContactLawType::hertzMindlin
-            ? "(2 pi/5) sqrt(m/S), S Hertz's stiffness at the peak overlap of an impact at "
-              "impactSpeed = " + formatValue(c.impactSpeed) + " m/s,"
-            : "(2 pi/5) sqrt(m_min/kn) = " + formatValue(bound) + " s (paper eq. 7)";
-        throw Error("dt = " + formatValue(s.dt) + " s is outside (0, " + formatValue(bound)
-                    + "]: the time-step bound " + stiffness + " of the smallest particle, "
-                    + className(s, kMin) + " of diameter "
-                    + formatValue(s.classes[kMin].diameter) + " m");
-    }
+    checkTimeStep(s);
 }
 
 std::vector<PlaneWall> boxWalls(const Box& box)

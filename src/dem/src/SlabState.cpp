@@ -229,6 +229,9 @@ void SlabSystem::load(const std::string& path)
     if (std::memcmp(head, slabMagic, sizeof(slabMagic)) != 0) fail("wrong file type");
     std::uint32_t version = 0;
     value(version);
+    // The checksum before the version: a damaged version field is no older file
+    refuseDamagedVersion(file, slabVersion, firstSealedSlabStateVersion, slabMagic,
+                         "slab state file '" + path + "'");
     if (version >= oldestSlabStateVersion && version < slabVersion) {
         throw Error("slab state file '" + path + "' is of version " + std::to_string(version)
                     + ", older than this build reads (" + std::to_string(slabVersion)

@@ -378,7 +378,8 @@ StateConversion convertState(const std::string& inPath, const std::string& outPa
                        "state file '" + inPath + "'");
         return c;
     }
-    const bool sealed = c.fromVersion >= (disc ? 6u : 4u);   // a checksum and a run record
+    const bool sealed = c.fromVersion >= (disc ? firstSealedDiscStateVersion
+                                               : firstSealedSlabStateVersion);
     if (sealed) {
         verifyChecksum(bytes, disc ? discStateMagic : slabStateMagic,
                        "state file '" + inPath + "'");

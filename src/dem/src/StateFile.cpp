@@ -199,6 +199,8 @@ void StateFile::load(System& s, const std::string& path)
     r.read(head, sizeof(head));
     if (std::memcmp(head, magic, sizeof(magic)) != 0) r.fail("wrong file type");
     const auto fileVersion = r.value<std::uint32_t>();
+    // The checksum before the version: a damaged version field is no older file
+    refuseDamagedVersion(bytes, version, firstSealedDiscStateVersion, magic, "state file '" + path + "'");
     if (fileVersion >= oldestDiscStateVersion && fileVersion < version) {
         throw Error("state file '" + path + "' is of version " + std::to_string(fileVersion)
                     + ", older than this build reads (" + std::to_string(version)

@@ -53,15 +53,63 @@ void verifyChecksum(const std::string& bytes, const char (&magic)[16], const std
         throw Error(what + " is damaged: its checksum does not match its contents (changed "
                     "since it was written: a disk or copy error, or an edit)");
     }
-    // No end marker last: data appended after a whole state, or a file cut short.
+    // No end marker last: data appended after a whole state, the marker itself damaged in a
+    // file of full length, or a file cut short.
     const char* found = std::find_end(bytes.data(), bytes.data() + n, magic, magic + sizeof(magic));
     const std::size_t at = static_cast<std::size_t>(found - bytes.data());
     if (found != bytes.data() + n && at >= tail + 20 && checksumBefore(at)) {
         throw Error(what + " is damaged: " + std::to_string(n - at - sizeof(magic))
                     + " bytes follow its end (appended to it: restore the file as written)");
     }
+    if (n >= tail + 20) {
+        // The last 16 bytes where the marker belongs: intact contents before them, or most
+        // of the marker's bytes in place, mean a whole file whose end was overwritten
+        const char* last = bytes.data() + n - sizeof(magic);
+        std::size_t same = 0;
+        for (std::size_t k = 0; k < sizeof(magic); ++k) same += last[k] == magic[k];
+        if (checksumBefore(n - sizeof(magic))) {
+            throw Error(what + " is damaged: its end marker is overwritten (" 
+                        + std::to_string(sizeof(magic) - same) + " of its 16 bytes differ), its "
+                        "contents before it intact (their checksum matches): a disk or copy "
+                        "error, or an edit");
+        }
+        if (2 * same >= sizeof(magic)) {
+            throw Error(what + " is damaged: its end marker is overwritten ("
+                        + std::to_string(sizeof(magic) - same) + " of its 16 bytes differ) and "
+                        "its checksum does not match its contents: a disk or copy error, or an "
+                        "edit");
+        }
+    }
     throw Error(what + " is damaged: it does not end with its checksum and end marker "
                 "(truncated: a copy or a write cut short)");
+}
+
+void refuseDamagedVersion(const std::string& bytes, std::uint32_t current,
+                          std::uint32_t firstSealed, const char (&magic)[16], const std::string& what)
+{
+    constexpr std::size_t at = sizeof(magic);   // the version follows the magic
+    std::uint32_t claimed = 0;
+    if (bytes.size() < at + sizeof(claimed)) return;
+    std::memcpy(&claimed, bytes.data() + at, sizeof(claimed));
+    if (claimed == current) return;
+    // The file as it would read with the current version: if its checksum then matches, the
+    // version field alone changed (the checksum covers it)
+    const std::size_t n = bytes.size();
+    constexpr std::size_t tail = sizeof(std::uint64_t) + sizeof(magic);
+    if (n >= tail + at + sizeof(claimed)
+        && std::memcmp(bytes.data() + n - sizeof(magic), magic, sizeof(magic)) == 0) {
+        std::string restored = bytes;
+        std::memcpy(&restored[at], &current, sizeof(current));
+        std::uint64_t stored = 0;
+        std::memcpy(&stored, bytes.data() + n - tail, sizeof(stored));
+        if (stored == fnv1a64(restored.data(), n - tail)) {
+            throw Error(what + " is damaged: its version field reads " + std::to_string(claimed)
+                        + " where its checksum is that of a version " + std::to_string(current)
+                        + " file (a disk or copy error, or an edit): restore the file as written");
+        }
+    }
+    // A version whose layout carries a checksum: the claim holds only if the checksum does
+    if (claimed >= firstSealed && claimed < current) verifyChecksum(bytes, magic, what);
 }
 
 void refuseForeignEngine(const std::string& bytes, int dimension, const std::string& path)

@@ -26,6 +26,13 @@ std::string readStateBytes(const std::string& path, const std::string& kind);
 /// a file cut short, or contents that changed since it was written.
 void verifyChecksum(const std::string& bytes, const char (&magic)[16], const std::string& what);
 
+/// Throws naming the damage if the version field after the magic of `bytes` is not
+/// `current` but was: the checksum matches the file with `current` in its place (a bit flip
+/// of the field), or the claimed earlier version carries a checksum (from `firstSealed` on)
+/// that does not match. Else returns, for the caller's version message.
+void refuseDamagedVersion(const std::string& bytes, std::uint32_t current,
+                          std::uint32_t firstSealed, const char (&magic)[16], const std::string& what);
+
 /// The two engines' magics, for naming a state of the other engine.
 extern const char discStateMagic[16];
 extern const char slabStateMagic[16];

@@ -152,11 +152,14 @@ std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
     const std::size_t moduli = static_cast<std::size_t>(
         std::find(names.begin(), names.end(), "contact wallYoungsModulus") - names.begin());
     const bool bothLinear = inFile[law] == 0.0 && here[law] == 0.0;
+    // and HertzMindlin does not read the linear law's kn and kt (kt stays the default)
+    const bool bothHertz = inFile[law] == 1.0 && here[law] == 1.0;
     std::vector<Difference> d;
     for (std::size_t k = 0; k + 1 < here.size(); ++k) {   // not the skin
         if (inFile[k] == here[k]) continue;
         if (k >= box && k < box + 4 && sameCoordinate(inFile[k], here[k], extent)) continue;
         if (bothLinear && k >= moduli) continue;
+        if (bothHertz && (names[k] == "contact kn" || names[k] == "contact kt")) continue;
         if (k == law) {
             d.push_back({names[k], lawName(inFile[k]), lawName(here[k])});
             continue;

@@ -93,3 +93,18 @@ TEST(ContactRecord, AnotherContactLawRollingFrictionOrModulusIsNamed)
     unread.classes[1].youngsModulus = 5e9;
     EXPECT_EQ(loadedUnder(unread, settings(), "bedUnread.state"), "");
 }
+
+// HertzMindlin does not read the linear law's kn (its stiffness comes from the moduli; its kt
+// must stay the default): a bed of the same Hertz settings but another kn loads, as a
+// linear bed does with other moduli; a law change is still named.
+TEST(ContactRecord, HertzMindlinBedLoadsWithAnotherLinearStiffness)
+{
+    Settings softer = hertzSettings();
+    softer.contact.kn = 200.0;
+    EXPECT_EQ(loadedUnder(hertzSettings(), softer, "bedHertzKn.state"), "");
+    Settings linear = settings();
+    linear.contact.kn = 200.0;
+    const std::string what = loadedUnder(hertzSettings(), linear, "bedHertzToLinear.state");
+    EXPECT_NE(what.find("contact law = HertzMindlin in the file, linear here"), std::string::npos) << what;
+    EXPECT_NE(what.find("contact kn"), std::string::npos) << what;   // the linear side reads kn
+}

@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cfenv>
 #include <cmath>
 #include <string>
 
@@ -277,4 +278,36 @@ TEST(HertzMindlin, BadMaterialsAndEntriesRefusedNamingThem)
     } catch (const Error& err) {
         EXPECT_EQ(std::string(err.what()), "contactLaw 'hertz' is not one of: linear, HertzMindlin");
     }
+}
+
+TEST(HertzMindlin, ContactAtZeroOverlapRaisesNoInvalidOperation)
+{
+    // A pair whose d^2 is one ulp below (r_i + r_j)^2 counts as touching while its distance
+    // rounds to r_i + r_j: the overlap is 0, so kt = Kt' sqrt(0) = 0 and the Coulomb limit
+    // is 0. The kernel must raise no FE_INVALID there (the solver traps it), in 2D and 3D,
+    // and give no force, the history carried on by the step's tangential displacement.
+    const double m = sphereMass(dSmall), r = 0.5 * dSmall, dt = 1e-7;
+    const ContactLaw law = makeHertzMindlinLaw(0.5 * m, 0.5 * r, eStarOf(youngs, poisson, youngs, poisson),
+                                               1e10, 0.5, 0.3);
+    volatile double zero = 0.0;   // not folded at compile time
+    const double vt = 0.01, xi = 2e-9;
+    PairGeometry g2{zero, {1.0, 0.0}, {0.2, vt}, r, r, xi, 0.0};
+    std::feclearexcept(FE_ALL_EXCEPT);
+    const PairForce f2 = contactForce<2, HertzMindlin>(g2, law, dt);
+    EXPECT_FALSE(std::fetestexcept(FE_INVALID)) << "2D";
+    EXPECT_EQ(f2.force.squaredNorm(), 0.0);
+    EXPECT_EQ(f2.xiT, xi + vt * dt);
+
+    PairGeometry3 g3;
+    g3.overlap = zero;
+    g3.nHat = Eigen::Vector3d(1.0, 0.0, 0.0);
+    g3.vRel = Eigen::Vector3d(0.2, vt, 0.0);
+    g3.rI = r;
+    g3.rJ = r;
+    g3.xiT = Eigen::Vector3d(0.0, xi, 0.0);
+    g3.omegaRel.setZero();
+    std::feclearexcept(FE_ALL_EXCEPT);
+    const PairForce3 f3 = contactForce<3, HertzMindlin>(g3, law, dt);
+    EXPECT_FALSE(std::fetestexcept(FE_INVALID)) << "3D";
+    EXPECT_EQ(f3.force.squaredNorm(), 0.0);
 }

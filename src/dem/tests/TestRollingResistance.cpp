@@ -171,3 +171,69 @@ TEST(RollingResistance, PairTorqueIsMuRTimesRollingRadiusTimesNormalForceAndOppo
     EXPECT_LT((f3.rollingTorque - expected).norm(), 1e-12 * full);
     EXPECT_LT((f3.torqueI + f3.torqueJ).norm(), 1e-12 * full);   // no tangential force here
 }
+
+namespace {
+
+/// Two equal spheres stacked on the floor of the engine of `dimension` at their static
+/// overlaps (floor 2 m g/kn, pair m g/kn), the lower spinning at +w0 and the upper at -w0
+/// about z: their contact points move together (w r - w r = 0), so the pair's only torque is
+/// the rolling resistance (frictionless floor, none on it). Particle 0 below, 1 above.
+std::unique_ptr<Simulation> spinningStack(int dimension, double w0)
+{
+    Settings s = paperSettings({0.0, 0.02, 0.0, 0.02});
+    s.gravity[1] = -g;
+    s.contact.frictionWall = 0.0;
+    s.contact.rollingFriction = muR;
+    s.dimension = dimension;
+    s.slabDepth = dimension == 3 ? 0.01 : 0.0;
+    auto sim = std::make_unique<Simulation>(s);
+    const double r = 0.5 * dSmall, weight = sphereMass(dSmall) * g, kn = s.contact.kn;
+    const double y0 = r - 2.0 * weight / kn, y1 = y0 + 2.0 * r - weight / kn;
+    if (dimension == 2) {
+        sim->addParticle(0, 0.01, y0, 0.0, 0.0, w0);
+        sim->addParticle(0, 0.01, y1, 0.0, 0.0, -w0);
+    } else {
+        sim->addParticle(0, {0.01, y0, 0.005}, {}, {0.0, 0.0, w0});
+        sim->addParticle(0, {0.01, y1, 0.005}, {}, {0.0, 0.0, -w0});
+    }
+    return sim;
+}
+
+} // namespace
+
+TEST(RollingResistance, PressedPairWithOppositeSpinsStopsRollingAtTheModelsRate)
+{
+    // Rigid-body mechanics of the stack: the pair carries the upper sphere's weight,
+    // F_n = m g, and the torques -+M, M = mu_r R* F_n (R* = r/2), act on the two spins
+    // only, so I (w_0 + w_1) = 0 is kept and the relative rolling w_r = w_0 - w_1 falls
+    // at M/I_eff (I_eff = I/2) from 2 w0 to 0 at t_stop, where the clamp (at most
+    // I_eff |w_r|/(n dt)) stops it without reversing it. Tolerances: 1 % on the rate and
+    // the stop (the normal force settles within a fraction of a percent of m g at the
+    // placed overlaps), 1e-9 of I w0 on the angular momentum (round-off of the torque sums).
+    const double w0 = 10.0;
+    const double m = sphereMass(dSmall), r = 0.5 * dSmall, inertia = 0.1 * m * dSmall * dSmall;
+    const double rate = muR * 0.5 * r * m * g / (0.5 * inertia);
+    const double tStop = 2.0 * w0 / rate;
+    for (int dimension : {2, 3}) {
+        auto sim = spinningStack(dimension, w0);
+        const double dt = sim->settings().dt;
+        double atHalf = NAN, stopped = -1.0, worstMomentum = 0.0, lowest = INFINITY;
+        while (sim->time() < 1.5 * tStop) {
+            sim->advance(dt);
+            const double w0Now = sim->omegaZ()[0], w1Now = sim->omegaZ()[1];
+            const double relative = w0Now - w1Now;
+            worstMomentum = std::max(worstMomentum, std::abs(w0Now + w1Now) / w0);
+            lowest = std::min(lowest, relative);
+            if (std::abs(sim->time() - 0.5 * tStop) < 0.5 * dt) atHalf = relative;
+            if (stopped < 0.0 && relative <= 1e-3 * 2.0 * w0) stopped = sim->time();
+        }
+        const char* engine = engineName(dimension);
+        EXPECT_LT(worstMomentum, 1e-9) << engine;
+        EXPECT_NEAR(atHalf, w0, 0.01 * w0) << engine;
+        EXPECT_NEAR(stopped, tStop, 0.01 * tStop) << engine;
+        // Stopped, not reversed: the relative rolling never changes sign and ends at rest
+        EXPECT_GE(lowest, 0.0) << engine;
+        EXPECT_LT(std::abs(sim->omegaZ()[0] - sim->omegaZ()[1]), 1e-6 * w0) << engine;
+        EXPECT_NEAR(sim->x()[1], sim->x()[0], 1e-9 * r) << engine;   // the stack stays upright
+    }
+}

@@ -12,6 +12,7 @@
 // before 3: skin 0.1 d_min).
 
 #include "OlderStateFiles.hpp"
+#include "StateIntegrity.hpp"
 #include "TestHelpers.hpp"
 #include "dem/SlabSystem.hpp"
 #include "dem/StateConversion.hpp"
@@ -159,8 +160,11 @@ TEST(StateConversion, CurrentUnknownAndForeignFilesAreNamed)
     EXPECT_EQ(c.toVersion, discStateVersion);
     EXPECT_FALSE(std::filesystem::exists(out));
 
+    // A whole file of a version this build does not know (its checksum its own); with the
+    // checksum of version 7 it is a damaged field (TestStateIntegrity)
     std::string unknown = b;
     put(unknown, 16, std::uint32_t{9});
+    put(unknown, unknown.size() - 24, fnv1a64(unknown.data(), unknown.size() - 24));
     writeAll(current, unknown);
     EXPECT_TRUE(has(errorOf([&] { convertState(current, out); }),
                     "state file '" + current + "' is not a valid DEM state: 2D state version 9, "
@@ -208,6 +212,28 @@ TEST(StateConversion, TheCommandConvertsInPlaceAndKeepsTheOriginal)
     EXPECT_NE(std::system(missing.c_str()), 0);
     EXPECT_TRUE(has(readAll(log), "dpmConvertState: cannot open state file '" + path + ".none'"))
         << readAll(log);
+}
+
+TEST(StateConversion, InPlaceWithABackupNameThatIsADirectoryIsRefusedCleanly)
+{
+    // The original's backup name taken by a directory: a clear error naming it, the original
+    // unchanged and no temporary left beside it
+    const std::string b = savedBed(2, fileName("backupDir"));
+    std::string expected;
+    const std::string old = olderDisc(b, 3, expected);
+    const std::string path = fileName("backupDir3");
+    writeAll(path, old);
+    std::filesystem::remove_all(path + ".version3");
+    std::filesystem::create_directory(path + ".version3");
+    const std::string log = path + ".log";
+    const std::string command = std::string(DEM_CONVERT_STATE) + " " + path + " >" + log + " 2>&1";
+    EXPECT_NE(std::system(command.c_str()), 0);
+    const std::string said = readAll(log);
+    EXPECT_TRUE(has(said, "cannot keep the original '" + path + "' as '" + path + ".version3'")
+                && has(said, "is a directory") && has(said, "nothing converted")) << said;
+    EXPECT_TRUE(readAll(path) == old);
+    EXPECT_FALSE(std::filesystem::exists(path + ".converting"));
+    std::filesystem::remove_all(path + ".version3");
 }
 
 // The previous versions (2D 6, slab 4) carried a run record but no contact law in the

@@ -158,6 +158,40 @@ TEST(StateIntegrity, DamagedFilesAreRefusedNamingTheDamage)
     }
 }
 
+TEST(StateIntegrity, ADamagedVersionFieldOrEndMarkerIsNamedAsDamage)
+{
+    // The checksum covers the version field: a bit flipped there (to a version that the
+    // converter reads, sealed or not) is damage, not an older file; an end marker overwritten
+    // in a file of full length is damage, not a cut
+    for (const Settings& s : {discSettings(), slabSettings()}) {
+        const std::string path = savedState(s, "version" + std::to_string(s.dimension));
+        const std::string good = readAll(path);
+        std::uint32_t version = 0;
+        std::memcpy(&version, &good[16], sizeof(version));
+        for (std::uint32_t bit : {1u, 4u, 64u}) {
+            std::string flipped = good;
+            const std::uint32_t other = version ^ bit;
+            std::memcpy(&flipped[16], &other, sizeof(other));
+            writeAll(path, flipped);
+            const std::string e = loadError(s, path);
+            EXPECT_TRUE(has(e, path) && has(e, "damaged: its version field reads " + std::to_string(other))
+                        && !has(e, "convert")) << e;
+        }
+        std::string marker = good;
+        marker[good.size() - 3] ^= 0x01;
+        writeAll(path, marker);
+        std::string e = loadError(s, path);
+        EXPECT_TRUE(has(e, path) && has(e, "damaged: its end marker is overwritten (1 of its 16")
+                    && has(e, "contents before it intact") && !has(e, "truncated")) << e;
+        std::string zeroed = good;
+        std::memset(&zeroed[good.size() - 16], 0, 16);
+        writeAll(path, zeroed);
+        e = loadError(s, path);
+        EXPECT_TRUE(has(e, "damaged: its end marker is overwritten") && !has(e, "truncated")) << e;
+        std::remove(path.c_str());
+    }
+}
+
 TEST(StateIntegrity, TheOtherEnginesStateIsNamed)
 {
     const std::string slab = savedState(slabSettings(), "foreignSlab");

@@ -53,8 +53,25 @@ int main(int argc, char** argv)
         }
         if (inPlace) {
             const std::string backup = in + ".version" + std::to_string(c.fromVersion);
-            fs::copy_file(in, backup, fs::copy_options::overwrite_existing);
-            fs::rename(converted, in);
+            // Any failure from here leaves the original as it was and no temporary behind
+            auto refuse = [&](const std::string& why) {
+                std::error_code ignored;
+                fs::remove(converted, ignored);
+                throw dem::Error("cannot keep the original '" + in + "' as '" + backup + "': "
+                                 + why + "; nothing converted");
+            };
+            std::error_code error;
+            const fs::file_status status = fs::symlink_status(backup, error);
+            if (fs::exists(status) && !fs::is_regular_file(status)) {
+                refuse("that name is a " + std::string(fs::is_directory(status) ? "directory"
+                                                                                 : "special file")
+                       + " (move it away, or convert to another file: " + dem::stateConverter
+                       + " <in> <out>)");
+            }
+            fs::copy_file(in, backup, fs::copy_options::overwrite_existing, error);
+            if (error) refuse(error.message());
+            fs::rename(converted, in, error);
+            if (error) refuse("the converted file could not replace it: " + error.message());
             std::cout << "Kept the original as '" << backup << "'\n";
         }
         std::cout << "Converted '" << in << "' (" << engine << " state version " << c.fromVersion

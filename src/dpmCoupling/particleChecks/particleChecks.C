@@ -202,6 +202,13 @@ void Foam::particleChecks::demStep(const dem::Settings& settings) const
             << " more than 1 % (docs/model.md, \"The DEM step's bound\");"
             << " a step of at most " << safe << " s is accurate" << endl;
     }
+    // Near the dashpot's own bound, or a Hertz impactSpeed below the bed's
+    // speed scale (the DEM refuses what is beyond)
+    for (const std::string& warning : dem::settingsWarnings(settings))
+    {
+        WarningInFunction
+            << warning.c_str() << " (" << dict_.name() << ")" << endl;
+    }
 }
 
 

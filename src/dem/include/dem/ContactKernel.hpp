@@ -185,8 +185,10 @@ template <int Dim, class Law = LinearSpringDashpot, bool Rolling = false>
         // Sliding picked without a branch, both outcomes computed: contacts start and end
         // sliding unpredictably in a bubbling bed
         const double capped = std::copysign(limit, trial);
-        const double xiCapped = -capped / c.kt;
         const bool slides = std::abs(trial) > limit;
+        // Divided by 1 where the result is not taken: at zero overlap Hertz-Mindlin's kt and
+        // the limit are both 0, and 0/0 would raise FE_INVALID (which the solver traps)
+        const double xiCapped = -capped / selectWithoutBranch(slides, c.kt, 1.0);
         const double ft = selectWithoutBranch(slides, capped, trial);
         const double xiT = selectWithoutBranch(slides, xiCapped, xiTrial);
         out.force = -fn * g.nHat + ft * tHat;

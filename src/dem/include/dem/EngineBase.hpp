@@ -36,6 +36,10 @@ namespace dem {
 /// Checks every setting, throwing dem::Error naming the first bad one.
 void validateSettings(const Settings& settings);
 
+/// The part of validateSettings that checks dt against the step bounds (timeStepBound,
+/// dashpotTimeStep), for settings otherwise valid.
+void checkTimeStep(const Settings& settings);
+
 /// The DEM steps of dt in one CFD step dtOuter; dem::Error unless a positive whole number
 /// (relative tolerance 1e-9).
 long subStepCount(double dtOuter, double dt);

@@ -19,6 +19,9 @@ inline constexpr std::uint32_t slabStateVersion = 5;
 /// The oldest versions the converter reads.
 inline constexpr std::uint32_t oldestDiscStateVersion = 2;
 inline constexpr std::uint32_t oldestSlabStateVersion = 1;
+/// The first versions that carry a checksum (and a run record).
+inline constexpr std::uint32_t firstSealedDiscStateVersion = 6;
+inline constexpr std::uint32_t firstSealedSlabStateVersion = 4;
 
 /// What convertState did.
 struct StateConversion {

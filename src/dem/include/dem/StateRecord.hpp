@@ -28,7 +28,8 @@ std::vector<double> settingsKey(const Settings& s, double skin);
 
 /// The entries of two settings keys that differ, named after `s` (the reader's settings),
 /// the skin left out (a state continues with another skin), the moduli too when both laws
-/// are linear (it does not read them). Keys of another number of classes give that one
+/// are linear and kn, kt when both are HertzMindlin (neither law reads them). Keys of
+/// another number of classes give that one
 /// difference.
 std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
                                             const std::vector<double>& here, const Settings& s);

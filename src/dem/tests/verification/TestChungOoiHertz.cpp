@@ -5,7 +5,7 @@
 // nu = 0.2, rho = 2800 kg/m^3, 10 m/s each) and of an aluminium sphere on a rigid plane
 // (R = 0.1 m, E = 7e10 Pa, nu = 0.3, rho = 2699 kg/m^3, 0.2 m/s; Kratos
 // DEM3D_chung_ooi_tests/test1_data, test2_data): the peak overlap, the peak force and the
-// contact time against Hertz's (Johnson 1985, section 11.4), within the suite's 2 %.
+// contact time against Hertz's (Johnson 1985, section 11.4), within the step's error.
 // Test 3: the restitution at e = 0.2 ... 1 on a wall and between two spheres (Al oxide,
 // R = 2.5 mm, E = 3.8e11 Pa, nu = 0.23, 3.9 m/s), Kratos's 1e-3. Test 4: the oblique impacts
 // against the paper's Al-oxide curves (its own Hertz-Mindlin results), the suite's 10 %
@@ -86,12 +86,20 @@ void checkAgainstHertz(int dimension, bool wall, double d, double rho, double yo
     const double tc = hertzImpactDuration(mEff, rEff, eStar, speed);
     const Peak p = normalImpact(dimension, wall, d, rho, youngs, poisson, speed, 1.0, 1000.0);
     std::printf("  %s %-4s: peak overlap %.4g/%.4g m, force %.4g/%.4g N, t_c %.4g/%.4g s "
-                "(DEM/Hertz)\n", test, engineName(dimension), p.overlap, deltaMax, p.force,
-                forceMax, p.contactTime, tc);
-    EXPECT_NEAR(p.overlap / deltaMax, 1.0, 0.02) << test << " " << engineName(dimension);
-    EXPECT_NEAR(p.force / forceMax, 1.0, 0.02) << test << " " << engineName(dimension);
-    EXPECT_NEAR(p.contactTime / tc, 1.0, 0.02) << test << " " << engineName(dimension);
-    EXPECT_NEAR(p.restitution, 1.0, 0.02) << test << " " << engineName(dimension);
+                "(DEM/Hertz); relative errors %.2e %.2e %.2e, e - 1 %.2e\n", test,
+                engineName(dimension), p.overlap, deltaMax, p.force, forceMax, p.contactTime, tc,
+                p.overlap / deltaMax - 1.0, p.force / forceMax - 1.0, p.contactTime / tc - 1.0,
+                p.restitution - 1.0);
+    // Tolerances from the step, dt = t_c/1000: the peaks are sampled once a step, within
+    // (pi dt/t_c)^2/8 ~ 1e-6 of the continuous peak, and velocity Verlet's own error is of
+    // order (dt/t_c)^2 (overlap 1e-5; the force, a step's mean from the velocity change,
+    // 1e-4); the contact time's ends are interpolated within a step, dt/t_c = 1e-3; the
+    // elastic (e = 1) step conserves energy to (dt/t_c)^2, 1e-6 in e
+    const std::string what = std::string(test) + " " + engineName(dimension);
+    EXPECT_NEAR(p.overlap / deltaMax, 1.0, 1e-5) << what;
+    EXPECT_NEAR(p.force / forceMax, 1.0, 1e-4) << what;
+    EXPECT_NEAR(p.contactTime / tc, 1.0, 1e-3) << what;
+    EXPECT_NEAR(p.restitution, 1.0, 1e-6) << what;
 }
 
 } // namespace
@@ -210,8 +218,8 @@ TEST(ChungOoiHertz, Test6SpinningImpactsAgainstTheReferenceWhereTheContactSlides
     // Graph 1: beta = -vtc'/vtc against chi = 3.5 mu (1 + e) vn/vtc; graph 2: vtc'/vn'
     // against vtc/vn; the suite's 10 % where the contact slides throughout (chi <= 1),
     // printed everywhere: where it sticks the rebound depends on the tangential history
-    // model, which the paper's curves do not state (this law departs there by up to 0.1
-    // in beta)
+    // model, which the paper's curves do not state (this law departs there by up to 0.30
+    // in beta, at chi = 24: -0.04 against -0.34; the verification README's findings)
     DEM_REFERENCE_OR_SKIP(table, "kratos_co_test6.csv");
     const double slide = 3.5 * alloyHertz.mu * (1.0 + alloyHertz.e);
     const double R = 0.5 * alloyHertz.d;

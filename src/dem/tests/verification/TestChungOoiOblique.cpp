@@ -114,29 +114,28 @@ TEST(ChungOoiTest4, DefaultStiffnessRatioWithinTenPercentWhereTheContactSlides)
     }
 }
 
-TEST(ChungOoiTest4, DefaultStiffnessRatioAtEveryAngle)
+TEST(ChungOoiTest4, DefaultStiffnessRatioDepartsFromTheCurvesAtSmallAngles)
 {
-    // kt = 2/7 kn over all angles, the suite's 10 %. Known finding: with kt = 2/7 kn the
-    // tangential oscillation lasts as long as the normal one, so below ~25 degrees the
-    // contact point's velocity turns fully (vt'/vt 0.45 at 5 degrees where the curve has
-    // 0.95, spin about twice the rolling value); the check is skipped while the measure
-    // exceeds 10 % (the Mindlin ratio above passes it).
+    // A finding, pinned as the expected outcome: with kt = 2/7 kn the tangential oscillation
+    // (stiffness 2/7 kn, the contact point's mass 2/7 m) lasts as long as the normal one, so
+    // at small incidence the contact point's velocity turns fully, towards the sticking
+    // oscillator's vt'/vt = 1 - 2/7 (1 - cos(pi sqrt(3.5 kt/kn))) = 3/7 as theta -> 0
+    // (DEM05's grazing limit), where the Al-oxide curve (Hertz-Mindlin's kt/kn) has ~0.95:
+    // the suite's measure over all angles exceeds its 10 % for every quantity (the Mindlin
+    // ratio above passes it). Checked: vt'/vt at 5 degrees within 10 % of 3/7 (the impact
+    // is not yet grazing there) and every measure above 10 %.
     DEM_REFERENCE_OR_SKIP(table, "kratos_co_test4.csv");
-    std::string finding;
     for (int dimension : {2, 3}) {
         const std::string label = std::string(engineName(dimension)) + " kt 2/7 kn";
         for (const std::string q : {"et", "omega", "rebound"}) {
             const Comparison c = compare(table, dimension, oxide, q, "oxide", 0.0, 90.0);
             print(label.c_str(), q, "oxide", c);
             print(label.c_str(), q, "experiment", compare(table, dimension, oxide, q, "experiment", 0.0, 90.0));
-            if (c.error >= 0.10) {
-                finding += " " + label + " " + q + " " + std::to_string(100.0 * c.error) + " %;";
-            }
+            EXPECT_GT(c.error, 0.10) << label << " " << q << ": the finding no longer holds";
         }
-    }
-    if (!finding.empty()) {
-        GTEST_SKIP() << "finding: kt = 2/7 kn turns the contact point's velocity at small "
-                        "incidence, error measure against the Al-oxide curves >= 10 %:" << finding;
+        const double grazing = 1.0 - 2.0 / 7.0 * (1.0 - std::cos(pi));
+        const double at5 = test4Quantity(dimension, oxide, "et", 5.0);
+        EXPECT_NEAR(at5, grazing, 0.1 * grazing) << label;
     }
 }
 
@@ -190,7 +189,8 @@ TEST(ChungOoiTest6, SpinningImpactsAgainstTheReferenceWhereTheContactSlides)
     // against vtc/vn (the contact point's tangential velocity). Checked with the suite's
     // 10 % where the contact slides throughout (chi <= 1, vtc/vn >= 3.5 mu (1 + e)), printed
     // everywhere: below, the rebound is set by the tangential compliance (Hertz-Mindlin's in
-    // the reference).
+    // the reference; kt = 2/7 kn departs there by up to 0.78 in beta, at chi = 4.5: the
+    // verification README's findings).
     DEM_REFERENCE_OR_SKIP(table, "kratos_co_test6.csv");
     const double slide = 3.5 * alloy.mu * (1.0 + alloy.e);
     for (int dimension : {2, 3}) {

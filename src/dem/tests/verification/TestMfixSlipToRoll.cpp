@@ -7,9 +7,9 @@
 // Both engines carry a sphere's moment of inertia (the 2D engine's discs are spheres moving in
 // a plane, model.md), so 5/7 is the reference in both. Set-up of MFIX tests/dem/DEM04
 // (mfix.dat): d = 1 mm, rho = 1e4 kg/m^3, kn = 1e4 N/m, kt = kn, e = 1, mu = 0.2 ... 1.0;
-// g = 9.80665 m/s^2; v0 = 0.2 m/s (the results are normalised by v0). Reference:
-// mfix_dem04.csv of the reference folder (its analytic column: TIME = t mu g/v0 = 2/7,
-// TVEL = v/v0 = 5/7, AVEL = omega R/v0 = 5/7; MFIX's own values beside them).
+// g = 9.80665 m/s^2; v0 = 0.2 m/s (the results are normalised by v0). Reference: the
+// analytic result, written here (mfix_dem04.csv's analytic column holds the same: TIME =
+// t mu g/v0 = 2/7, TVEL = v/v0 = 5/7, AVEL = omega R/v0 = 5/7), no table needed.
 
 #include "verification/VerificationHelpers.hpp"
 
@@ -73,17 +73,13 @@ TEST(MfixDem04, SlidingSphereRollsAtFiveSeventhsAfterTwoSeventhsNormalisedTime)
     // adds a stick transition of the order of its period, tc). MFIX's own values are within
     // 0.02 % (ratios) and 0.6 % (time) of the analytic ones. kt = kn as MFIX's set-up, and the
     // library's default kt = 2/7 kn, which the rigid-body result does not depend on.
-    DEM_REFERENCE_OR_SKIP(table, "mfix_dem04.csv");
-    std::map<double, std::map<std::string, double>> ref;   // mu -> quantity -> analytic
-    for (const auto& r : table.rows) ref[number(r, "mu")][r.at("quantity")] = number(r, "analytic");
-    ASSERT_EQ(ref.size(), 9u);
+    // The rigid-body result, written here (MFIX's table has it as its analytic column): the
+    // slip ends at t mu g/v0 = 2/7 with v/v0 = omega R/v0 = 5/7, whatever mu; MFIX's nine mu.
+    const std::map<std::string, double> q{{"TIME", 2.0 / 7.0}, {"TVEL", 5.0 / 7.0}, {"AVEL", 5.0 / 7.0}};
     for (int dimension : {2, 3}) {
         for (double kt : {kn, -1.0}) {
             double worst[3] = {0.0, 0.0, 0.0};
-            for (const auto& [mu, q] : ref) {
-                ASSERT_NEAR(q.at("TIME"), 2.0 / 7.0, 1e-8);
-                ASSERT_NEAR(q.at("TVEL"), 5.0 / 7.0, 1e-8);
-                ASSERT_NEAR(q.at("AVEL"), 5.0 / 7.0, 1e-8);
+            for (double mu : {0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0}) {
                 const Rolling got = slipToRoll(dimension, mu, kt);
                 const std::string what = std::string(engineName(dimension)) + " kt "
                                          + (kt > 0 ? "kn" : "2/7 kn") + " mu " + std::to_string(mu);

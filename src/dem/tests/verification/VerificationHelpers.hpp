@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -77,11 +78,26 @@ inline std::optional<Table> readReference(const std::string& file)
     return t;
 }
 
-/// Reads reference table `file` into `table`, or skips the test naming the missing file.
+/// Whether the reference tables must be present: the environment variable
+/// DPMFOAM2D_REQUIRE_REFERENCE set to anything but "" or "0" (CI, where the folder is beside
+/// the repository), so that a missing table fails its test instead of skipping it.
+inline bool referenceRequired()
+{
+    const char* v = std::getenv("DPMFOAM2D_REQUIRE_REFERENCE");
+    return v && *v && std::string(v) != "0";
+}
+
+/// Reads reference table `file` into `table`, or skips the test naming the missing file
+/// (fails it if referenceRequired()).
 #define DEM_REFERENCE_OR_SKIP(table, file)                                                      \
     const std::optional<::dem::verification::Table> table##Read =                               \
         ::dem::verification::readReference(file);                                               \
     if (!table##Read) {                                                                         \
+        if (::dem::verification::referenceRequired()) {                                         \
+            GTEST_FAIL() << "reference table " << ::dem::verification::referenceFolder() << "/" \
+                         << (file) << " is absent, and DPMFOAM2D_REQUIRE_REFERENCE says it "    \
+                            "must be present (the folder of SOURCES.md beside the repository)"; \
+        }                                                                                       \
         GTEST_SKIP() << "reference table " << ::dem::verification::referenceFolder() << "/"     \
                      << (file) << " is absent (the folder of SOURCES.md beside the repository)"; \
     }                                                                                           \

@@ -1,0 +1,234 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The DEM step's bounds (docs/model.md, "The DEM step's bound"): the contact time of the
+// stiffest contact, the dashpot's own stability, and the impact speed a Hertz contact is
+// sized for; the check validateSettings makes of them and the warnings near them.
+
+#include "dem/ContactLaw.hpp"
+#include "dem/System.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dem {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+double classMass(const ParticleClass& c)
+{
+    return c.density * pi * c.diameter * c.diameter * c.diameter / 6.0;
+}
+
+std::string className(const Settings& s, int k)
+{
+    return "classes[" + std::to_string(k) + "] ('" + s.classes[k].name + "')";
+}
+
+/// One kind of contact: a pair of classes or a class on a wall.
+struct ContactKind {
+    int lighter;         ///< the lighter class
+    double m;            ///< its mass, kg
+    double mEff;         ///< effective mass, kg
+    double rEff;         ///< effective radius, m
+    double eStar;        ///< Hertz's effective modulus, Pa (HertzMindlin)
+    bool wall;
+};
+
+/// body(kind) for every pair of classes and every class on a wall.
+template <class Body> void forEachContactKind(const Settings& s, const Body& body)
+{
+    const ContactSettings& c = s.contact;
+    const bool hertz = c.law == ContactLawType::hertzMindlin;
+    const std::size_t n = s.classes.size();
+    for (std::size_t a = 0; a < n; ++a) {
+        const ParticleClass& ca = s.classes[a];
+        const double ma = classMass(ca);
+        const double ra = 0.5 * ca.diameter;
+        for (std::size_t b = a; b < n; ++b) {
+            const ParticleClass& cb = s.classes[b];
+            const double mb = classMass(cb);
+            const double rb = 0.5 * cb.diameter;
+            const double eStar = hertz ? effectiveYoungsModulus(ca.youngsModulus, ca.poissonRatio,
+                                                                cb.youngsModulus, cb.poissonRatio)
+                                       : 0.0;
+            body(ContactKind{static_cast<int>(ma <= mb ? a : b), std::min(ma, mb),
+                             ma * mb / (ma + mb), ra * rb / (ra + rb), eStar, false});
+        }
+        const double eStar = hertz ? effectiveYoungsModulus(ca.youngsModulus, ca.poissonRatio,
+                                                            c.wallYoungsModulus, c.wallPoissonRatio)
+                                   : 0.0;
+        body(ContactKind{static_cast<int>(a), ma, ma, ra, eStar, true});
+    }
+}
+
+/// Hertz's peak overlap of a head-on impact at speed v, m.
+double hertzPeakOverlap(const ContactKind& k, double v)
+{
+    return std::pow(15.0 * k.mEff * v * v / (16.0 * k.eStar * std::sqrt(k.rEff)), 0.4);
+}
+
+/// The normal damping of a kind at its largest: the linear law's eta_n, or Hertz-Mindlin's
+/// at the elastic peak overlap of an impact at hertzSpeed (damping lowers the peak), N s/m.
+double largestNormalDamping(const Settings& s, const ContactKind& k)
+{
+    const ContactSettings& c = s.contact;
+    const double e = k.wall ? c.restitutionWall : c.restitution;
+    if (c.law != ContactLawType::hertzMindlin) return dampingFromRestitution(k.mEff, c.kn, e);
+    const double hertzKn = 4.0 / 3.0 * k.eStar * std::sqrt(k.rEff);
+    const double delta = hertzPeakOverlap(k, hertzSpeed(s));
+    return hertzDampingFromRestitution(e) * std::sqrt(k.mEff * hertzKn) * std::sqrt(std::sqrt(delta));
+}
+
+/// The kind of contact with the smallest mEff/eta_n and that step (dashpotTimeStep).
+std::pair<ContactKind, double> dashpotLimited(const Settings& s)
+{
+    ContactKind worst{};
+    double step = INFINITY;
+    forEachContactKind(s, [&](const ContactKind& k) {
+        const double eta = largestNormalDamping(s, k);
+        if (eta > 0.0 && k.mEff / eta < step) {
+            step = k.mEff / eta;
+            worst = k;
+        }
+    });
+    return {worst, step};
+}
+
+/// Above this fraction of dashpotTimeStep the bounce loses accuracy (measured, TestStepBound:
+/// at 0.6-0.7 a restitution of 0.01 comes out 0.0092-0.0102): warned.
+constexpr double dashpotWarnFraction = 0.5;
+
+} // namespace
+
+double bedSpeedScale(const Settings& settings)
+{
+    double d = 0.0;
+    for (const ParticleClass& c : settings.classes) d = std::max(d, c.diameter);
+    return std::sqrt(std::hypot(settings.gravity[0], settings.gravity[1]) * d);
+}
+
+double hertzSpeed(const Settings& settings)
+{
+    return std::max(settings.contact.impactSpeed, bedSpeedScale(settings));
+}
+
+double timeStepBound(const Settings& settings, int* smallestClass)
+{
+    int kMin = 0;
+    double bound = INFINITY;
+    if (settings.contact.law == ContactLawType::hertzMindlin) {
+        const double v = hertzSpeed(settings);
+        forEachContactKind(settings, [&](const ContactKind& k) {
+            const double stiffness = 2.0 * k.eStar * std::sqrt(k.rEff * hertzPeakOverlap(k, v));
+            const double b = 2.0 * pi / 5.0 * std::sqrt(k.m / stiffness);
+            if (b < bound) {
+                bound = b;
+                kMin = k.lighter;
+            }
+        });
+    } else {
+        double mMin = INFINITY;
+        for (std::size_t k = 0; k < settings.classes.size(); ++k) {
+            const double m = classMass(settings.classes[k]);
+            if (m < mMin) {
+                mMin = m;
+                kMin = static_cast<int>(k);
+            }
+        }
+        bound = 2.0 * pi / 5.0 * std::sqrt(mMin / settings.contact.kn);
+    }
+    if (smallestClass) *smallestClass = kMin;
+    return bound;
+}
+
+double pairContactTime(const Settings& settings)
+{
+    const ContactSettings& c = settings.contact;
+    if (c.law == ContactLawType::hertzMindlin) {
+        double tc = INFINITY;
+        const double v = hertzSpeed(settings);
+        forEachContactKind(settings, [&](const ContactKind& k) {
+            tc = std::min(tc, hertzContactTime(k.mEff, k.rEff, k.eStar, v));
+        });
+        return tc;
+    }
+    int k = 0;
+    timeStepBound(settings, &k);
+    const double mEff = 0.5 * classMass(settings.classes[k]);
+    return linearContactDuration(mEff, c.kn, dampingFromRestitution(mEff, c.kn, c.restitution));
+}
+
+// Measured with the paper's particles (TestStepBound; docs/model.md): at dt = t_c/10 a
+// head-on pair's restitution is within 1 %; at 0.25 t_c within 5 % and a settling bed comes
+// to rest; above 0.4 t_c the bed does not (0.45 t_c: overlaps double; 0.55 t_c, just under
+// eq. 7's bound: particles thrown out of the box).
+double safeTimeStep(const Settings& settings) { return 0.1 * pairContactTime(settings); }
+double stableTimeStep(const Settings& settings) { return 0.25 * pairContactTime(settings); }
+
+double dashpotTimeStep(const Settings& settings) { return dashpotLimited(settings).second; }
+
+void checkTimeStep(const Settings& s)
+{
+    const ContactSettings& c = s.contact;
+    const bool hertz = c.law == ContactLawType::hertzMindlin;
+    int kMin = 0;
+    const double bound = timeStepBound(s, &kMin);
+    if (s.dt > bound) {
+        const bool bedScale = hertz && c.impactSpeed < bedSpeedScale(s);
+        const std::string stiffness = hertz
+            ? "(2 pi/5) sqrt(m/S), S Hertz's stiffness at the peak overlap of an impact at "
+              + (bedScale ? "the bed's own speed scale sqrt(|g| d_max) = " + formatValue(bedSpeedScale(s))
+                                + " m/s (above impactSpeed = " + formatValue(c.impactSpeed)
+                                + " m/s: a bed under gravity collides at least that fast)"
+                          : "impactSpeed = " + formatValue(c.impactSpeed) + " m/s") + ","
+            : "(2 pi/5) sqrt(m_min/kn) = " + formatValue(bound) + " s (paper eq. 7)";
+        throw Error("dt = " + formatValue(s.dt) + " s is outside (0, " + formatValue(bound)
+                    + "]: the time-step bound " + stiffness + " of the smallest particle, "
+                    + className(s, kMin) + " of diameter "
+                    + formatValue(s.classes[kMin].diameter) + " m");
+    }
+    // An explicit step with a dashpot eta on a contact of effective mass mEff reverses the
+    // relative velocity within one step when eta dt/mEff > 1: the contact then rebounds
+    // nearly elastically whatever restitution asked for (model.md, "The DEM step's bound")
+    const auto [kind, dashpot] = dashpotLimited(s);
+    if (s.dt > dashpot) {
+        const std::string entry = kind.wall ? "restitutionWall" : "restitution";
+        const double e = kind.wall ? c.restitutionWall : c.restitution;
+        throw Error("dt = " + formatValue(s.dt) + " s (the DEM step, deltaT) is above the "
+                    "dashpot's stability bound at " + entry + " = " + formatValue(e) + ": the "
+                    "normal damping eta of a " + className(s, kind.lighter)
+                    + (kind.wall ? " contact on a wall" : " pair contact") + " reverses the "
+                    "relative velocity within one step (eta dt/m_eff = "
+                    + formatValue(s.dt / dashpot) + " > 1) and the contact rebounds nearly "
+                    "elastically; allowed: dt in (0, " + formatValue(dashpot) + "] s, the largest "
+                    "step that works at this " + entry + ", or a larger " + entry);
+    }
+}
+
+std::vector<std::string> settingsWarnings(const Settings& s)
+{
+    std::vector<std::string> out;
+    const ContactSettings& c = s.contact;
+    const auto [kind, dashpot] = dashpotLimited(s);
+    if (s.dt > dashpotWarnFraction * dashpot) {
+        const std::string entry = kind.wall ? "restitutionWall" : "restitution";
+        out.push_back("dt = " + formatValue(s.dt) + " s (the DEM step, deltaT) is near the "
+                      "dashpot's stability bound " + formatValue(dashpot) + " s at " + entry
+                      + " = " + formatValue(kind.wall ? c.restitutionWall : c.restitution)
+                      + " (eta dt/m_eff = " + formatValue(s.dt / dashpot) + "): the rebound of "
+                      "strongly damped contacts is off by up to 10 %; a step of at most "
+                      + formatValue(dashpotWarnFraction * dashpot) + " s is accurate");
+    }
+    if (c.law == ContactLawType::hertzMindlin && c.impactSpeed < bedSpeedScale(s)) {
+        out.push_back("impactSpeed = " + formatValue(c.impactSpeed) + " m/s is below the bed's "
+                      "own speed scale sqrt(|g| d_max) = " + formatValue(bedSpeedScale(s))
+                      + " m/s, the speed of a fall through half the largest diameter: the step "
+                      "bounds take the contact time at " + formatValue(bedSpeedScale(s))
+                      + " m/s; set impactSpeed to the fastest impact expected");
+    }
+    return out;
+}
+
+} // namespace dem
