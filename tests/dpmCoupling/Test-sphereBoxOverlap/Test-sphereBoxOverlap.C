@@ -30,6 +30,7 @@ Description
 #include "sphereBoxOverlap.H"
 #include "discRectangleOverlap.H"
 #include "columnQuadrature.H"
+#include "absoluteCheck.H"
 
 #include <algorithm>
 #include <random>
@@ -37,22 +38,8 @@ Description
 
 using namespace Foam;
 
-static label nPassed = 0, nFailed = 0;
-
-//- Pass when |value - expected| <= tol (absolute), and report
-static void check
-(
-    const std::string& what, const scalar value, const scalar expected,
-    const scalar tol
-)
-{
-    const scalar err = mag(value - expected);
-    const bool ok = std::isfinite(value) && err <= tol;
-    (ok ? nPassed : nFailed)++;
-    Info<< (ok ? "PASS " : "FAIL ") << what.c_str() << ": " << value
-        << " expected " << expected << " (error " << err << ", tolerance "
-        << tol << ")" << endl;
-}
+using absoluteCheck::nPassed;
+using absoluteCheck::nFailed;
 
 
 //- The box volume by quadrature over z of the disc-rectangle area, to an

@@ -32,26 +32,13 @@ Description
 #include "cartesianGrid2D.H"
 #include "forEachSphereOverlap.H"
 #include "columnQuadrature.H"
+#include "absoluteCheck.H"
 #include "sphereColumnBenchmark.H"
 
 using namespace Foam;
 
-static label nPassed = 0, nFailed = 0;
-
-//- Pass when |value - expected| <= tol (absolute), and report
-static void check
-(
-    const std::string& what, const scalar value, const scalar expected,
-    const scalar tol
-)
-{
-    const scalar err = mag(value - expected);
-    const bool ok = std::isfinite(value) && err <= tol;
-    (ok ? nPassed : nFailed)++;
-    Info<< (ok ? "PASS " : "FAIL ") << what.c_str() << ": " << value
-        << " expected " << expected << " (error " << err << ", tolerance "
-        << tol << ")" << endl;
-}
+using absoluteCheck::nPassed;
+using absoluteCheck::nFailed;
 
 
 int main(int argc, char *argv[])
