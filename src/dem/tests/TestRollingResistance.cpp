@@ -3,7 +3,9 @@
 // Constant-torque rolling resistance (Ai, Chen, Rotter and Ooi 2011, "type A"; model.md,
 // "Rolling resistance") in both engines: a sphere rolling on the floor decelerates at the
 // model's rate and stops where and when it predicts; on a slope it holds below the angle the
-// model allows and rolls above it at the predicted acceleration. Expected values are derived
+// model allows and rolls above it at the predicted acceleration; a pressed pair with opposite
+// spins keeps its angular momentum and stops rolling relative to each other at the model's
+// rate, without reversing. Expected values are derived
 // here from rigid-body mechanics (the 2D engine's discs have a sphere's I = m d^2/10):
 //   rolling without slip, torque M = mu_r r m g cos(theta) against the spin, friction F:
 //   m a = m g sin(theta) - F,  I a / r = F r - M   =>   a = g (sin - mu_r cos) / (1 + I/(m r^2)),
