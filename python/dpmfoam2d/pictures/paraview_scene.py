@@ -18,7 +18,7 @@ true diameter (a glyph of radius 0.5 scaled by `diameter`) and coloured by
 `class` with the colours of the project's snapshots. The camera looks at the
 bed through its front face (z = 0), as the snapshots do, framed on the bed:
 the column's width, from its bottom to a tenth of the bed's height above its
-highest particle, the walls outlined; the colour legends (the classes by
+highest particle (at least half the width), the walls outlined; the colour legends (the classes by
 name and diameter, the voidage) and the time stand beside it.
 """
 
@@ -108,6 +108,8 @@ spheres.UpdatePipeline(t)
 top = spheres.GetDataInformation().GetBounds()[3]
 x0, x1, y0 = bounds[0], bounds[1], bounds[2]
 y1 = min(bounds[3], top + 0.1 * (top - y0)) if top > y0 else bounds[3]
+# at least half as tall as wide (a shallow bed: the legends keep their size)
+y1 = min(bounds[3], max(y1, y0 + 0.5 * (x1 - x0)))
 pad = 0.02 * (y1 - y0)
 frameHeight = y1 - y0 + 2 * pad
 bedWidth = int(round(height * (x1 - x0 + 2 * pad) / frameHeight))
