@@ -33,7 +33,7 @@
 # against the whole force failed (-1.06 %).
 # It failed by 2.5 % while the explicit force's boundary values (Ustar) were
 # never updated: the distributor face then counted half of the bottom row's
-# drag a second time (docs/model.md, "The gas-side excess").
+# drag a second time (docs/theory/numerics.md, "The gas-side excess").
 #   ergunFixedBed.sh <workDir> [A|B] [discs2D | slab3D <depth>]
 #                                       (default B discs2D)
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
@@ -102,7 +102,7 @@ PY
 # (0.4 % of it in the 2D bed, 1.2 % in the 5-mm slab). The cell-
 # centred momentum (faceMomentum no) rebuilt the end rows' gas at 0.61 and
 # 0.71 of the interior speed (the freeboard's at 0.4-1.3 U0) and lost half
-# of the bottom row's drop (docs/model.md, "The bed's end cells").
+# of the bottom row's drop (docs/theory/numerics.md, "The bed's end cells").
 # Tolerances: 0.1 % on the velocities, 1 % on the drop (the gradient's 0.16 %
 # scatter, with half a row at the distributor). The whole bed's drop is only
 # printed: the top row's particles interpolate the freeboard's gas, a

@@ -12,12 +12,12 @@
 # 1.5 s of 2 s of gas. The momentum term is not small in this narrow,
 # slugging bed: over 1.5 s it moves the balance by up to 2.3 % of the
 # weight, over 0.5 s by up to 6 %, with a sign set by the slug's phase at
-# the window's ends (docs/model.md, "The fluidized bed's pressure balance", DiFelice). Less the
+# the window's ends (docs/theory/numerics.md, "The fluidized bed's pressure balance", DiFelice). Less the
 # floor's share: some particles rest on the distributor (about 7 % of the
 # weight at 1 bar), its mean force kn x overlap over the saved states
 # (linear springs; the damping averages out). It used to be offset by a
 # gas-side excess of 3.5 %, the distributor's pressure counting half the
-# bottom row's drag twice, fixed (docs/model.md, "The gas-side excess").
+# bottom row's drag twice, fixed (docs/theory/numerics.md, "The gas-side excess").
 # The same run checks, at every write, that the gas carries exactly the
 # force the particles feel and that the particles' area is mapped to cells
 # in full (round-off: relative 1e-10).

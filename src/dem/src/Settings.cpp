@@ -37,7 +37,7 @@ void requireNonNegative(double value, const std::string& name)
 void requireRestitution(double value, const std::string& name)
 {
     if (!(value > 0.0 && value <= 1.0)) {
-        // The clamped dashpot leaves a rebound at any finite damping (model.md, "Particles")
+        // The clamped dashpot leaves a rebound at any finite damping (docs/theory/dem.md, "Particles")
         const std::string why = value == 0.0 ? ": e = 0 would need an infinite damping (a "
                                                "normal force clamped at zero rebounds at any "
                                                "finite one); a small e such as 0.01 is "

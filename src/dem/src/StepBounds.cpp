@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The DEM step's bounds (docs/model.md, "The DEM step's bound"): the contact time of the
+// The DEM step's bounds (docs/theory/numerics.md, "The DEM step's bound"): the contact time of the
 // stiffest contact, the dashpot's own stability, and the impact speed a Hertz contact is
 // sized for; the check validateSettings makes of them and the warnings near them.
 
@@ -160,7 +160,7 @@ double pairContactTime(const Settings& settings)
     return linearContactDuration(mEff, c.kn, dampingFromRestitution(mEff, c.kn, c.restitution));
 }
 
-// Measured with the paper's particles (TestStepBound; docs/model.md): at dt = t_c/10 a
+// Measured with the paper's particles (TestStepBound; docs/theory/numerics.md): at dt = t_c/10 a
 // head-on pair's restitution is within 1 %; at 0.25 t_c within 5 % and a settling bed comes
 // to rest; above 0.4 t_c the bed does not (0.45 t_c: overlaps double; 0.55 t_c, just under
 // eq. 7's bound: particles thrown out of the box).
@@ -191,7 +191,7 @@ void checkTimeStep(const Settings& s)
     }
     // An explicit step with a dashpot eta on a contact of effective mass mEff reverses the
     // relative velocity within one step when eta dt/mEff > 1: the contact then rebounds
-    // nearly elastically whatever restitution asked for (model.md, "The DEM step's bound")
+    // nearly elastically whatever restitution asked for (docs/theory/numerics.md, "The DEM step's bound")
     const auto [kind, dashpot] = dashpotLimited(s);
     if (s.dt > dashpot) {
         const std::string entry = kind.wall ? "restitutionWall" : "restitution";

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The step checks beyond the contact time (docs/model.md, "The DEM step's bound"): the
+// The step checks beyond the contact time (docs/theory/numerics.md, "The DEM step's bound"): the
 // dashpot's own stability bound, and Hertz-Mindlin's impact speed against the bed's own.
 // An explicit step with a dashpot eta on a contact of effective mass m_eff reverses the
 // relative velocity within one step once eta dt/m_eff > 1, and the contact then rebounds
@@ -8,7 +8,7 @@
 // (alumina, d = 5 mm, 3.9 m/s on a rigid wall) at e = 0.001 and t_H/50 (t_H Hertz's elastic
 // contact time) rebounds at 0.14 of its speed (the linear law, kn = 1e6 N/m, at its own
 // pi sqrt(m/kn)/50: 0.98); at t_H/200 at 0.001. The largest step is the least m_eff/eta over
-// the wall and the pair, eta written here from the laws' definitions (docs/model.md): the
+// the wall and the pair, eta written here from the laws' definitions (docs/theory/dem.md): the
 // linear law's 2 zeta sqrt(m_eff kn); Hertz-Mindlin's alpha(e) sqrt(m_eff Kn) delta_max^1/4 at the
 // elastic peak overlap of the impact, alpha taken from the library's restitution solver,
 // whose own test (Chung and Ooi's test 3) holds it to the input e.

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The Hertz-Mindlin contact law (contactLaw HertzMindlin; model.md, "The Hertz-Mindlin law")
+// The Hertz-Mindlin contact law (contactLaw HertzMindlin; docs/theory/dem.md, "The Hertz-Mindlin law")
 // in both engines, against Hertz's theory of elastic impact (Johnson 1985, Contact
 // Mechanics, sections 4.2 and 11.4): the force-overlap F = 4/3 E* sqrt(R*) delta^3/2, the
 // peak overlap delta_max = (15 mEff v^2/(16 E* sqrt(R*)))^2/5 and the contact time
@@ -230,7 +230,7 @@ TEST(HertzMindlin, StepBoundsAreTheLawsAtTheImpactSpeed)
 
 TEST(HertzMindlin, RollingResistanceCombines)
 {
-    // The rolling torque's limit is mu_r R_r F_n with Hertz's F_n (model.md, "Rolling
+    // The rolling torque's limit is mu_r R_r F_n with Hertz's F_n (docs/theory/dem.md, "Rolling
     // resistance"): on the kernel at overlap 1e-6 m, within 1e-12
     const double m = sphereMass(dSmall);
     const double r = 0.5 * dSmall;

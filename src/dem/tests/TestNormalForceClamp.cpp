@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The normal force clamped at zero (model.md, "Particles"): friction is limited by the
+// The normal force clamped at zero (docs/theory/dem.md, "Particles"): friction is limited by the
 // compressive normal force only, so a contact that slides throughout takes a tangential
 // impulse of exactly mu times its normal impulse (Coulomb's law of impact, e.g. Brach 1991;
 // Chung and Ooi 2011, test 6's sliding regime); and the damping built for the clamped law

@@ -93,7 +93,7 @@ TEST(Restitution, AtThePaperTimeStepAndConverging)
 {
     // The effective e at the paper's dt = 1e-5 s and as dt falls, printed and checked. At
     // 1e-5 s every pair's t_c/dt is 16.5 or more, inside the safe bound t_c/10, where e is
-    // within 1 % (docs/model.md, "The DEM step's bound"). At t_c/50 and t_c/100 the step's
+    // within 1 % (docs/theory/numerics.md, "The DEM step's bound"). At t_c/50 and t_c/100 the step's
     // error is first order, e_DEM - e = (A (1 - 2 phi) + L)/N with A = (w t_c) zeta e,
     // L = (w t_c) (zeta^2/2) de/dzeta, phi the contact's onset within a step (the
     // verification README; derived in TestRestitutionStepOrder): within (A + |L|)/N at any

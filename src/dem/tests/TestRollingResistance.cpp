@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Constant-torque rolling resistance (Ai, Chen, Rotter and Ooi 2011, "type A"; model.md,
+// Constant-torque rolling resistance (Ai, Chen, Rotter and Ooi 2011, "type A"; docs/theory/dem.md,
 // "Rolling resistance") in both engines: a sphere rolling on the floor decelerates at the
 // model's rate and stops where and when it predicts; on a slope it holds below the angle the
 // model allows and rolls above it at the predicted acceleration; a pressed pair with opposite

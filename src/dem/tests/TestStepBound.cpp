@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Where the DEM step stops being accurate and stable for the linear spring-dashpot law
-// (docs/model.md, "The DEM step's bound"): a head-on pair of the smallest particles against
+// (docs/theory/numerics.md, "The DEM step's bound"): a head-on pair of the smallest particles against
 // the continuous-time solution (restitution e exact, peak overlap delta_max = v0/omega_d
 // exp(-zeta/sqrt(1-zeta^2) atan(sqrt(1-zeta^2)/zeta))), and a settling bed (kinetic energy
 // and overlap after settling), at steps dt/t_c from 1/50 to eq. 7's bound. The table is
@@ -90,7 +90,7 @@ TEST(StepBound, MeasuredTable)
                 2.0 * pi / 5.0 * std::sqrt(mSmall / 800.0) / tcPair);
     std::printf("  %8s %10s %12s %14s %12s\n", "dt/t_c", "e error", "peak/exact", "bed KE (J)",
                 "overlap/d");
-    // Each row against the bounds the library states (docs/model.md): up to the safe step
+    // Each row against the bounds the library states (docs/theory/numerics.md): up to the safe step
     // t_c/10 e within 1 % and the peak overlap within 2 % of the continuous-time values; up
     // to the stable one, t_c/4, e within 10 % and the bed at rest (kinetic energy below 1e-8
     // J per particle, overlaps below 1 % of d_small); from t_c/2 on the bed not at rest.

@@ -283,7 +283,7 @@ void Foam::gasParticleExchange::exchangeToGas()
     // The boundary values too: the pressure equation takes the explicit
     // force Kc U* - Fp on the distributor face (constrainPressure); with U*
     // left 0 there it counted half the bottom row's drag a second time in
-    // the distributor's pressure (docs/model.md, "The gas-side excess")
+    // the distributor's pressure (docs/theory/numerics.md, "The gas-side excess")
     Ustar_.primitiveFieldRef() = gasVelocitySeen_;
     Ustar_.correctBoundaryConditions();
     reactionReady_ = true;

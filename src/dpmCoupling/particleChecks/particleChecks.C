@@ -188,7 +188,7 @@ void Foam::particleChecks::demStep(const dem::Settings& settings) const
             << settings.classes[smallestClass(settings)].name.c_str()
             << " particles): a"
             << " settling bed does not come to rest and overlaps grow"
-            << " (docs/model.md, \"The DEM step's bound\"; eq. 7's "
+            << " (docs/theory/numerics.md, \"The DEM step's bound\"; eq. 7's "
             << dem::timeStepBound(settings) << " s is not safe). Allowed"
             << " range (0, " << stable << "] s; accurate up to " << safe
             << " s" << exit(FatalIOError);
@@ -199,7 +199,7 @@ void Foam::particleChecks::demStep(const dem::Settings& settings) const
             << "DEM step 'deltaT' = " << dt << " s in " << dict_.name()
             << " is above the safe bound " << safe << " s (t_c/10): stable,"
             << " but restitution and overlaps of head-on contacts are off by"
-            << " more than 1 % (docs/model.md, \"The DEM step's bound\");"
+            << " more than 1 % (docs/theory/numerics.md, \"The DEM step's bound\");"
             << " a step of at most " << safe << " s is accurate" << endl;
     }
     // Near the dashpot's own bound, or a Hertz impactSpeed below the bed's

@@ -124,7 +124,7 @@ dem::Settings Foam::particleEngine::settings
         FatalIOErrorInFunction(contact)
             << "Entry 'contactLaw' = " << law << " in " << contact.name()
             << " is not allowed; allowed: linear (the paper's, default) or"
-            << " HertzMindlin (docs/model.md, \"The Hertz-Mindlin law\")"
+            << " HertzMindlin (docs/theory/dem.md, \"The Hertz-Mindlin law\")"
             << exit(FatalIOError);
     }
     if (cs.law == dem::ContactLawType::linear)

@@ -100,7 +100,7 @@ struct ContactStiffness {
 inline double springEnergy(double kt, double xi) { return 0.5 * kt * xi * xi; }
 inline double springEnergy(double kt, const Eigen::Vector3d& xi) { return 0.5 * kt * xi.squaredNorm(); }
 
-/// The paper's linear spring-dashpot: constant kn, kt, etaN, etaT (model.md, "Particles").
+/// The paper's linear spring-dashpot: constant kn, kt, etaN, etaT (docs/theory/dem.md, "Particles").
 struct LinearSpringDashpot {
     static ContactStiffness at(double overlap, double vn, const ContactLaw& law)
     {
@@ -113,7 +113,7 @@ struct LinearSpringDashpot {
     }
 };
 
-/// Hertz's normal force and Mindlin and Deresiewicz's tangential stiffness (model.md, "The
+/// Hertz's normal force and Mindlin and Deresiewicz's tangential stiffness (docs/theory/dem.md, "The
 /// Hertz-Mindlin law"): F_n = max(Kn delta^3/2 + etaN' delta^1/4 v_n, 0) (Tsuji et al.
 /// 1992's damping, its coefficient solved for the restitution), kt = Kt' delta^1/2,
 /// eta_t = etaT' delta^1/4.
@@ -133,7 +133,7 @@ struct HertzMindlin {
     }
 };
 
-/// Constant-torque rolling resistance (Ai et al. 2011, type A; model.md, "Rolling
+/// Constant-torque rolling resistance (Ai et al. 2011, type A; docs/theory/dem.md, "Rolling
 /// resistance"): a torque of magnitude mu_r R_r Fn against the relative rolling w_r, clamped
 /// to |w_r| I_eff/(n dt) so that it stops the rolling without reversing it. In 3D w_r is the
 /// part of w_i - w_j in the tangent plane (the twist about nHat is not rolling).

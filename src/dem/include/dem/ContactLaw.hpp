@@ -13,13 +13,13 @@ struct ContactLaw {
     double etaN;   ///< normal damping, N s/m
     double etaT;   ///< tangential damping, N s/m (by default = etaN: the paper's Table 1 has one eta)
     double mu;     ///< sliding friction coefficient
-    /// Rolling resistance (model.md, "Rolling resistance"): mu_r R_r, the largest rolling
+    /// Rolling resistance (docs/theory/dem.md, "Rolling resistance"): mu_r R_r, the largest rolling
     /// torque per newton of normal force, m; 0 without rolling resistance.
     double rollingTorquePerForce = 0.0;
     /// I_eff/(n dt): the rolling torque per unit relative rolling speed below which it is
     /// clamped, so that it stops the relative rolling in n steps at the fastest, N m s.
     double rollingTorquePerSpin = 0.0;
-    /// Hertz-Mindlin (model.md, "The Hertz-Mindlin law"; 0 under the linear law):
+    /// Hertz-Mindlin (docs/theory/dem.md, "The Hertz-Mindlin law"; 0 under the linear law):
     /// F_n = max(hertzKn delta^3/2 + hertzEtaN delta^1/4 v_n, 0), kt = mindlinKt delta^1/2,
     /// eta_t = mindlinEtaT delta^1/4.
     double hertzKn = 0.0;       ///< 4/3 E* sqrt(R*), N/m^1.5
@@ -30,7 +30,7 @@ struct ContactLaw {
 
 /// Restitution of a head-on collision of the linear spring-dashpot whose normal force is
 /// clamped at zero, at damping ratio zeta = etaN/(2 sqrt(mEff kn)): the particles part when
-/// the force vanishes (Schwager and Poeschel 2007; model.md, "Particles").
+/// the force vanishes (Schwager and Poeschel 2007; docs/theory/dem.md, "Particles").
 double restitutionOfDampingRatio(double zeta);
 
 /// Normal damping that gives restitution e in (0, 1] for a head-on collision of effective

@@ -44,7 +44,7 @@ struct ContactSettings {
     double frictionParticle = 0.15;    ///< sliding friction particle-particle, >= 0
     double frictionWall = 0.10;        ///< sliding friction particle-wall, >= 0
     /// Rolling resistance mu_r particle-particle, >= 0 (0: none): a torque of at most
-    /// mu_r R_r Fn against the relative rolling (model.md, "Rolling resistance").
+    /// mu_r R_r Fn against the relative rolling (docs/theory/dem.md, "Rolling resistance").
     double rollingFriction = 0.0;
     double rollingFrictionWall = 0.0;  ///< rolling resistance particle-wall, >= 0
     double wallYoungsModulus = 0.0;    ///< HertzMindlin: the walls' Young's modulus, Pa, > 0
@@ -136,7 +136,7 @@ double timeStepBound(const Settings& settings, int* smallestClass = nullptr);
 /// hertzSpeed over the pairs of classes and the walls.
 double pairContactTime(const Settings& settings);
 
-/// The DEM step's measured bounds (docs/model.md, "The DEM step's bound"), as fractions of
+/// The DEM step's measured bounds (docs/theory/numerics.md, "The DEM step's bound"), as fractions of
 /// pairContactTime: below the safe one a head-on pair keeps its restitution within 1 % and
 /// a settling bed comes to rest; above the stable one a settling bed does not.
 double safeTimeStep(const Settings& settings);

@@ -5,7 +5,7 @@
 // t = 2 v0/(7 mu g), when it rolls with v = 5/7 v0 and omega R = 5/7 v0 (rigid-body result for
 // a solid sphere, I = 2/5 m R^2; a disc of I = 1/2 m R^2 would give 2/3 v0 at t = v0/(3 mu g)).
 // Both engines carry a sphere's moment of inertia (the 2D engine's discs are spheres moving in
-// a plane, model.md), so 5/7 is the reference in both. Set-up of MFIX tests/dem/DEM04
+// a plane, docs/theory/dem.md), so 5/7 is the reference in both. Set-up of MFIX tests/dem/DEM04
 // (mfix.dat): d = 1 mm, rho = 1e4 kg/m^3, kn = 1e4 N/m, kt = kn, e = 1, mu = 0.2 ... 1.0;
 // g = 9.80665 m/s^2; v0 = 0.2 m/s (the results are normalised by v0). Reference: the
 // analytic result, written here (mfix_dem04.csv's analytic column holds the same: TIME =

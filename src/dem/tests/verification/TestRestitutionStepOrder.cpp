@@ -218,7 +218,7 @@ TEST(RestitutionStepOrder, PaperStepSpreadsEOverTheContactPhase)
 {
     // The paper's e = 0.97, kn = 800 N/m, dt = 1e-5 s, every kind of contact, the contact
     // starting at 20 phases spread over a step (a bed's contacts start at any). Each within
-    // 1 % of e (the safe bound t_c/10 that every kind is under: model.md, "The DEM step's
+    // 1 % of e (the safe bound t_c/10 that every kind is under: docs/theory/numerics.md, "The DEM step's
     // bound"); their mean within A/(10 N) of e + L/N: the onset's first-order part averages
     // out over the phase, the lag's stays.
     const double e = 0.97, kn = 800.0, dt = 1e-5;

@@ -7,7 +7,7 @@
 //   m_t x'' = -kt x - eta_t x',   x(0) = 0, x'(0) = u0,
 // whose velocity is u(t) = u0 exp(-gamma t) (cos(w_d t) - gamma/w_d sin(w_d t)),
 // gamma = eta_t/(2 m_t), w_d = sqrt(kt/m_t - gamma^2). The coefficients are written here from
-// the laws' definitions (docs/model.md): the linear law's kt = 2/7 kn and eta_t = eta_n of
+// the laws' definitions (docs/theory/dem.md): the linear law's kt = 2/7 kn and eta_t = eta_n of
 // the clamped head-on contact at e; Hertz-Mindlin's kt = 8 G* sqrt(R delta0) and
 // eta_t = alpha(e) sqrt(2/3 m kt) at the static overlap delta0 = (m g/(4/3 E* sqrt(R)))^2/3,
 // alpha(e) the damping of Tsuji et al.'s Hertz impact solved here for e. The normal contact

@@ -65,7 +65,7 @@ void Foam::couplingFormulations::A::checkBedDepth
             << " m: packed densely they fill phiP = " << phiPMax
             << " of a cell, more than 1 - voidageMin = " << 1 - voidageMin
             << "; there eps_g = 1 - phiP is held at voidageMin and A no"
-            << " longer matches B's pressure drop (docs/model.md,"
+            << " longer matches B's pressure drop (docs/theory/coupling.md,"
             << " formulations A and B)" << endl;
     }
 }

@@ -33,7 +33,7 @@ Foam::string Foam::couplingSchedules::concurrent::description() const
     return
         "schedule concurrent: the gas advances beside the particles, on"
         " a thread of its own, with their voidage and reaction of the"
-        " step before (docs/model.md)";
+        " step before (docs/theory/coupling.md)";
 }
 
 
