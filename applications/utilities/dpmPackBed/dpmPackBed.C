@@ -117,21 +117,12 @@ int main(int argc, char *argv[])
     }
 
     // Where to save: -output, else initialBed/file, else constant/
-    const dictionary& bed =
-        mesh.lookupObject<IOdictionary>("particleProperties")
-       .subDict("initialBed");
-    caseChecks::fileNameEntry
-    (
-        bed, "file", "Entry 'file' of initialBed in " + bed.topDict().name()
-    );
+    const fileName bedFile = particles.bedFile();
     const fileName output
     (
-        args.found("output")
-      ? args.get<fileName>("output")
-      : bed.lookupOrDefault<fileName>
-        (
-            "file", runTime.constant()/"packedBed.state"
-        ).expand()
+        args.found("output") ? args.get<fileName>("output")
+      : !bedFile.empty() ? bedFile
+      : runTime.constant()/"packedBed.state"
     );
     const autoPtr<caseLock> bedLock
     (
