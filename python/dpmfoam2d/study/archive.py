@@ -126,15 +126,19 @@ def summarise(case, dest, source):
                    "time %.9g\nfrom %s\n" % (t, source))
 
 
+def finished(case, end_time):
+    """Whether a case (a run or a summary of one) has reached end_time
+    (None: any time on disk will do)."""
+    t = summary_time(case) if is_summary(case) else latest_complete_time(case)
+    return t is not None and (end_time is None or t >= end_time - 1e-9) and \
+        os.path.isfile(os.path.join(case, "log.dpmFoam2D"))
+
+
 def finished_cases(study_dir, say):
     """The finished cases of a study directory (runs and summaries)."""
     out = []
     for c in study_cases.find_cases(study_dir):
-        case = c["dir"]
-        t = summary_time(case) if is_summary(case) else latest_complete_time(case)
-        end = c["endTime"]
-        if t is not None and (end is None or t >= end - 1e-9) and \
-                os.path.isfile(os.path.join(case, "log.dpmFoam2D")):
+        if finished(c["dir"], c["endTime"]):
             out.append(c)
         else:
             say("export: %s left out: not finished" % c["case"])

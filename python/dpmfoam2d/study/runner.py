@@ -177,12 +177,7 @@ class Study:
             os.path.join(case, "constant", "caseSettings"))["endTime"])
 
     def finished(self, case):
-        if study_archive.is_summary(case):
-            t = study_archive.summary_time(case)
-            return t is not None and t >= self.end_time(case) - 1e-9
-        t = latest_complete_time(case)
-        return t is not None and os.path.isfile(os.path.join(case, "log.dpmFoam2D")) \
-            and t >= self.end_time(case) - 1e-9
+        return study_archive.finished(case, self.end_time(case))
 
     def case_job(self, w, p, seed, bed):
         case = self.case_dir(w, p, seed)
