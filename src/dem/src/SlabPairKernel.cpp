@@ -132,10 +132,13 @@ template <PairLaw law, Partner partner, class Pack>
         ftx = slides ? ftx * cap : ftx;
         fty = slides ? fty * cap : fty;
         ftz = slides ? ftz * cap : ftz;
+        // Spring and dashpot give the capped force; a spring that would point against it is relaxed
         const Pack ktSliding = slides ? kt : one;
-        at<Pack>(b.xix + q) = slides ? -ftx / ktSliding : xix;
-        at<Pack>(b.xiy + q) = slides ? -fty / ktSliding : xiy;
-        at<Pack>(b.xiz + q) = slides ? -ftz / ktSliding : xiz;
+        const Pack springX = ftx + etaT * vtx, springY = fty + etaT * vty, springZ = ftz + etaT * vtz;
+        const auto springAlong = springX * ftx + springY * fty + springZ * ftz > zero;
+        at<Pack>(b.xix + q) = slides ? (springAlong ? -springX : zero) / ktSliding : xix;
+        at<Pack>(b.xiy + q) = slides ? (springAlong ? -springY : zero) / ktSliding : xiy;
+        at<Pack>(b.xiz + q) = slides ? (springAlong ? -springZ : zero) / ktSliding : xiz;
         at<Pack>(b.fx + q) = -fn * nx + ftx;
         at<Pack>(b.fy + q) = -fn * ny + fty;
         at<Pack>(b.fz + q) = -fn * nz + ftz;

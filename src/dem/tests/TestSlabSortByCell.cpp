@@ -73,8 +73,9 @@ void setFluid(SlabSystem& sim)
 TEST(SlabSortByCell, SwappedPairKeepsItsTangentialHistory)
 {
     // Sphere 1 (large) on the floor, sphere 0 (small) resting on it a search row higher
-    // (both pressed in by their weights, 3e-7 and 5e-8 m), sliding sideways in x and z:
-    // friction loads the pair's tangential spring with a 3-vector history (mu m g/kt, 3e-8 m).
+    // (both pressed in by their weights, 3e-7 and 5e-8 m), sliding sideways in x and z slowly
+    // enough (4.7 mm/s) that the dashpot carries less than the Coulomb limit: friction loads
+    // the pair's tangential spring with the rest, a 3-vector history of about 1e-8 m.
     // Sorting renumbers them (1 -> 0, 0 -> 1) mid-contact; the pair (i, j) becomes (j, i) and
     // its history must change sign. Then 200 more steps, as the run never sorted: a history
     // kept with the wrong sign reverses the friction (6.6e-6 N on 4.5e-6 kg: velocities apart
@@ -85,7 +86,7 @@ TEST(SlabSortByCell, SwappedPairKeepsItsTangentialHistory)
         auto sim = std::make_unique<SlabSystem>(settings);
         const double z = 0.00375;
         const double yLarge = 0.5 * dLarge - 3e-7;
-        sim->addParticle(0, {0.01, yLarge + 0.5 * (dLarge + dSmall) - 5e-8, z}, {0.05, 0.0, -0.03});
+        sim->addParticle(0, {0.01, yLarge + 0.5 * (dLarge + dSmall) - 5e-8, z}, {0.004, 0.0, -0.0025});
         sim->addParticle(1, {0.01, yLarge, z}, {0.0, 0.0, 0.0});
         return sim;
     };

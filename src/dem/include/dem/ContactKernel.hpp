@@ -161,8 +161,13 @@ rollingTorque(const PairGeometryT<Dim>& g, double fn, const ContactLaw& law)
 /// added. In 2D the tangent "plane" is the line tHat = ez x nHat and the history is the
 /// scalar component along tHat, so it turns with the normal by construction.
 /// When the trial force (spring + dashpot) exceeds mu Fn the contact slides: the force is
-/// set to the limit and the stored displacement is reset so that the spring alone carries it,
-/// xi = -Ft/kt (kt and eta_t those of the law at the current overlap). Dashpot velocity is the one passed in vRel. dt = 0 evaluates without
+/// set to the limit Ft and the stored displacement is reset so that spring and dashpot
+/// together give it, -kt xi = Ft + eta_t v_t (kt and eta_t those of the law at the current
+/// overlap), as LAMMPS' granular pair styles do: a spring made to carry the dashpot's share
+/// too would hold energy that no work supplied. Where the dashpot alone exceeds the limit,
+/// that spring force would point against Ft; the spring is then left relaxed (xi = 0), since
+/// a reversed spring, scaled up with the overlap by Hertz-Mindlin's kt, would push the
+/// contact along its sliding. The dashpot's velocity is the one in vRel. dt = 0 evaluates without
 /// accumulating history. Torques: (r_i nHat) x Ft on i and (r_j nHat) x Ft on j (its lever
 /// arm -r_j nHat times its force -Ft). With Rolling, the rolling torque is added to both
 /// (rollingTorque on i, its opposite on j) and returned apart in rollingTorque.
@@ -188,7 +193,9 @@ template <int Dim, class Law = LinearSpringDashpot, bool Rolling = false>
         const bool slides = std::abs(trial) > limit;
         // Divided by 1 where the result is not taken: at zero overlap Hertz-Mindlin's kt and
         // the limit are both 0, and 0/0 would raise FE_INVALID (which the solver traps)
-        const double xiCapped = -capped / selectWithoutBranch(slides, c.kt, 1.0);
+        const double spring = capped + c.etaT * vt;   // the spring's share of the capped force
+        const double xiCapped = selectWithoutBranch(spring * capped > 0.0, -spring, 0.0)
+                                / selectWithoutBranch(slides, c.kt, 1.0);
         const double ft = selectWithoutBranch(slides, capped, trial);
         const double xiT = selectWithoutBranch(slides, xiCapped, xiTrial);
         out.force = -fn * g.nHat + ft * tHat;
@@ -218,7 +225,9 @@ template <int Dim, class Law = LinearSpringDashpot, bool Rolling = false>
         const double ft2 = ft.squaredNorm();
         if (ft2 > limit * limit) {
             ft *= limit / std::sqrt(ft2);
-            xi = -ft / c.kt;
+            const Eigen::Vector3d spring = ft + c.etaT * vt;   // its share of the capped force
+            const double along = spring.x() * ft.x() + spring.y() * ft.y() + spring.z() * ft.z();
+            xi = along > 0.0 ? Eigen::Vector3d(-spring / c.kt) : Eigen::Vector3d::Zero();
         }
         out.force = -fn * g.nHat + ft;
         const Eigen::Vector3d nxF = g.nHat.cross(ft);
