@@ -9,6 +9,7 @@
 
 #include "PairGroups.hpp"
 #include "StreamingLoops.hpp"
+#include "WallGeometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -247,17 +248,13 @@ void SlabSystem::addWallForcesAndKickWith(double historyDt, bool kick, bool flui
                 const auto [s, i] = picked[q];
                 const double ri = p.radius[i];
                 const PlaneWall3& wall = walls[wWall[s]];
-                PairGeometry3 c;
-                c.overlap = ri - wall.distance(p.position(i));
-                c.nHat = -wall.nHat;
-                c.vRel = p.velocity(i) + (ri * p.spin(i)).cross(c.nHat);
-                c.rI = ri;
-                c.rJ = 0.0;
+                PairGeometry3 c = wallGeometry(p, i, wall, ri - wall.distance(p.position(i)));
                 c.xiT = wXi[s];
-                c.omegaRel = p.spin(i);
                 const PairForce3 f = contactForce<3, Law, true>(c, wallLaws[p.classIndex[i]], historyDt);
                 p.fx[i] += f.force.x(); p.fy[i] += f.force.y(); p.fz[i] += f.force.z();
-                p.tx[i] += f.torqueI.x(); p.ty[i] += f.torqueI.y(); p.tz[i] += f.torqueI.z();
+                // The tangential torque and the rolling torque, scaled (limitRollingTorques)
+                const Vec3 torque = ri * c.nHat.cross(f.ft) + rollingScale_[i] * f.rollingTorque;
+                p.tx[i] += torque.x(); p.ty[i] += torque.y(); p.tz[i] += torque.z();
                 wXi[s] = f.xiT;
                 ++touching;
                 maxOverlap = std::max(maxOverlap, c.overlap);

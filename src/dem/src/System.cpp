@@ -6,6 +6,8 @@
 #include "dem/System.hpp"
 
 #include "PairGroups.hpp"
+#include "RollingLimit.hpp"
+#include "WallGeometry.hpp"
 #include "StreamingLoops.hpp"
 
 #include <algorithm>
@@ -101,6 +103,15 @@ void System::sumPairForces(double historyDt)
     double* sumFy = p_.fy.data();
     double* sumFt = p_.torque.data();
     const std::size_t n = p_.size();
+    if constexpr (Rolling) {
+        pairRolling_.resize(pairs_.size());
+        rollingScale_.resize(n);
+        touchingPerGroup_.resize(nPairGroups);
+    }
+    double* pairRolling = pairRolling_.data();
+    double* share = rollingScale_.data();
+    const double* invInertia = p_.invInertia.data();
+    const double dt = settings_.dt;
 
     // A touching pair (found by the group's first pass). Inlined into the group's second
     // pass: called out of line, it reloaded its dozen captured pointers for every pair.
@@ -129,13 +140,15 @@ void System::sumPairForces(double historyDt)
         sumFy[i] += f.force.y();
         sumFx[j] -= f.force.x();
         sumFy[j] -= f.force.y();
+        sumFt[i] += f.ft;   // the torque on either partner is r ft (see contactForce)
+        sumFt[j] += f.ft;
         if constexpr (Rolling) {
-            // The rolling torque over the radius the torque sums are multiplied by
-            sumFt[i] += f.ft + f.rollingTorque / r[i];
-            sumFt[j] += f.ft - f.rollingTorque / r[j];
-        } else {
-            sumFt[i] += f.ft;   // the torque on either partner is r ft (see contactForce)
-            sumFt[j] += f.ft;
+            // Added by limitRollingTorques, scaled, once every contact's share is known
+            pairRolling[k] = f.rollingTorque;
+            const double c = rollingCoefficient(std::abs(f.rollingTorque), std::abs(g.omegaRel),
+                                                laws[law[k]]);
+            share[i] += c * dt * invInertia[i];
+            share[j] += c * dt * invInertia[j];
         }
         ++touching;
         maxOverlap = std::max(maxOverlap, g.overlap);
@@ -163,13 +176,65 @@ void System::sumPairForces(double historyDt)
             xiT[k] = selectWithoutBranch(touch, xi, 0.0);   // separated: the history ends
         }
         for (int q = 0; q < m; ++q) pairForce(picked[q], touching, maxOverlap);
+        if constexpr (Rolling) touchingPerGroup_[g] = m;
     };
     auto zeroBlock = [&](std::size_t first, std::size_t last) {
         std::fill(sumFx + first, sumFx + last, 0.0);
         std::fill(sumFy + first, sumFy + last, 0.0);
         std::fill(sumFt + first, sumFt + last, 0.0);
+        if constexpr (Rolling) std::fill(share + first, share + last, 0.0);
     };
     sumPairGroups(settings_.nThreads, n, zeroBlock, group, contactCount_, maxOverlap_);
+    if constexpr (Rolling) limitRollingTorques<Law>();
+}
+
+template <class Law> void System::limitRollingTorques()
+{
+    const Index n = static_cast<Index>(p_.size());
+    const int* wStart = wallContacts_.start.data();
+    double* share = rollingScale_.data();
+    const double dt = settings_.dt;
+#pragma omp parallel num_threads(settings_.nThreads)
+    {
+        const auto [first, last] = threadShare(n);
+        for (Index i = first; i < last; ++i) {
+            const Eigen::Vector2d pos(p_.x[i], p_.y[i]);
+            for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
+                const PlaneWall& w = walls_[wallContacts_.wall[s]];
+                const double overlap = p_.radius[i] - w.distance(pos);
+                if (overlap <= 0.0) continue;
+                const ContactLaw& law = wallLaws_[p_.classIndex[i]];
+                const PairGeometry g = wallGeometry(p_, i, w, overlap);
+                const double fn = Law::at(overlap, g.vRel.dot(g.nHat), law).fn;
+                const double torque = std::abs(rollingTorque<2>(g, fn, law));
+                share[i] += rollingCoefficient(torque, std::abs(g.omegaRel), law) * dt * p_.invInertia[i];
+            }
+        }
+        rollingScales(share, static_cast<std::size_t>(first), static_cast<std::size_t>(last));
+    }
+    // The pairs' torques over the radius the torque sums are multiplied by, in list order
+    const int* pi = pairs_.i.data();
+    const int* pj = pairs_.j.data();
+    const int* groupStart = pairs_.groupStart.data();
+    const int* touchingPairs = touchingScratch_.data();
+    const double* pairRolling = pairRolling_.data();
+    const double* r = p_.radius.data();
+    double* sumFt = p_.torque.data();
+    auto group = [&](int g, std::size_t&, double&) {
+        const int* picked = touchingPairs + groupStart[g];
+        for (int q = 0; q < touchingPerGroup_[g]; ++q) {
+            const int k = picked[q];
+            const int i = pi[k];
+            const int j = pj[k];
+            const double torque = rollingScale(share, i, j) * pairRolling[k];
+            sumFt[i] += torque / r[i];
+            sumFt[j] -= torque / r[j];
+        }
+    };
+    std::size_t unusedCount = 0;
+    double unusedOverlap = 0.0;
+    sumPairGroups(settings_.nThreads, p_.size(), [](std::size_t, std::size_t) {}, group,
+                  unusedCount, unusedOverlap);
 }
 
 void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
@@ -198,6 +263,7 @@ void System::addWallForcesAndKickWith(double historyDt, bool kick, bool fluid)
     double* fyA = p.fy.data();
     double* torqueA = p.torque.data();
     const double* radius = p.radius.data();
+    const double* rollingScale = rollingScale_.data();
 
     const KickArrays kickArrays{
         wStart,          fxA,           fyA,           radius,      p.invMass.data(),
@@ -238,19 +304,16 @@ void System::addWallForcesAndKickWith(double historyDt, bool kick, bool fluid)
                     wXi[s] = 0.0;
                     continue;
                 }
-                PairGeometry g;
-                g.overlap = overlap;
-                g.nHat = -w.nHat;
-                const Eigen::Vector2d tHat(-g.nHat.y(), g.nHat.x());
-                g.vRel = Eigen::Vector2d(p.vx[i], p.vy[i]) + p.omega[i] * ri * tHat;
-                g.rI = ri;
-                g.rJ = 0.0;
+                PairGeometry g = wallGeometry(p, i, w, overlap);
                 g.xiT = wXi[s];
-                if constexpr (Rolling) g.omegaRel = p.omega[i];
                 const PairForce f = contactForce<2, Law, Rolling>(g, wallLaws[p.classIndex[i]], historyDt);
                 fx += f.force.x();
                 fy += f.force.y();
-                torque += f.torqueI;
+                if constexpr (Rolling) {
+                    torque += ri * f.ft + rollingScale[i] * f.rollingTorque;
+                } else {
+                    torque += f.torqueI;
+                }
                 wXi[s] = f.xiT;
                 ++touching;
                 maxOverlap = std::max(maxOverlap, overlap);

@@ -21,6 +21,8 @@
 
 #include <cmath>
 #include <memory>
+#include <utility>
+#include <algorithm>
 
 using namespace dem;
 using namespace dem::test;
@@ -237,5 +239,107 @@ TEST(RollingResistance, PressedPairWithOppositeSpinsStopsRollingAtTheModelsRate)
         EXPECT_GE(lowest, 0.0) << engine;
         EXPECT_LT(std::abs(sim->omegaZ()[0] - sim->omegaZ()[1]), 1e-6 * w0) << engine;
         EXPECT_NEAR(sim->x()[1], sim->x()[0], 1e-9 * r) << engine;   // the stack stays upright
+    }
+}
+
+namespace {
+
+/// A triangular lattice of 7 x 7 small spheres pressed 5 um into each other (no gravity, no
+/// friction, far from the walls), spinning about z in the lattice's mixed-phase mode: +w0 on
+/// one of its three sublattices, -w0/2 on the other two (a sphere's six neighbours are three
+/// of each other sublattice). Every contact rolls at 1.5 w0 within the clamp. Returns the
+/// engine and the index of the middle sphere (on the +w0 sublattice).
+std::pair<std::unique_ptr<Simulation>, int> spinningLattice(int dimension, double w0)
+{
+    Settings s = paperSettings({0.0, 0.03, 0.0, 0.03});
+    s.gravity[1] = 0.0;
+    s.contact.frictionParticle = 0.0;
+    s.contact.frictionWall = 0.0;
+    s.contact.rollingFriction = 1.0;   // mu_r R* F_n = 1.5e-6 N m: above the clamp's 2e-7
+    s.dimension = dimension;
+    s.slabDepth = dimension == 3 ? 0.01 : 0.0;
+    auto sim = std::make_unique<Simulation>(s);
+    const double a = dSmall - 5e-6;
+    int middle = -1;
+    for (int j = 0; j < 7; ++j) {
+        for (int i = 0; i < 7; ++i) {
+            const double x = 0.008 + a * (i + 0.5 * j), y = 0.01 + a * 0.5 * std::sqrt(3.0) * j;
+            const double w = ((i - j) % 3 + 3) % 3 == 0 ? w0 : -0.5 * w0;
+            if (i == 3 && j == 3) middle = static_cast<int>(sim->size());
+            if (dimension == 2) {
+                sim->addParticle(0, x, y, 0.0, 0.0, w);
+            } else {
+                sim->addParticle(0, {x, y, 0.005}, {}, {0.0, 0.0, w});
+            }
+        }
+    }
+    return {std::move(sim), middle};
+}
+
+} // namespace
+
+TEST(RollingResistance, ManyClampedContactsStopTheRollingWithoutReversing)
+{
+    // Each clamped contact takes I_eff/(n I) = 1/8 of its relative rolling from each sphere
+    // in a step; in the mixed-phase mode the middle sphere's six contacts would take
+    // 6 x 1.5/8 = 9/8 of its spin, reversing it every step. With the limit of
+    // RollingLimit.hpp (each sphere's shares summing to at most 1/2, here 2/3 of them kept)
+    // the mode decays without changing sign: the middle sphere's spin stays positive and
+    // falls below 1 % of w0 in 5 steps ((1 - 3/4)^5 = 1e-3 in the linear estimate), while
+    // the torques, equal and opposite, keep the angular momentum (round-off, 1e-9 of I w0).
+    const double w0 = 10.0;
+    for (int dimension : {2, 3}) {
+        auto [sim, middle] = spinningLattice(dimension, w0);
+        const double dt = sim->settings().dt;
+        auto momentum = [&] {
+            double sum = 0.0;
+            for (std::size_t k = 0; k < sim->size(); ++k) sum += sim->omegaZ()[k];
+            return sum;   // equal spheres: I times it is the angular momentum
+        };
+        const double start = momentum();
+        double lowest = w0, worstMomentum = 0.0;
+        for (int step = 0; step < 5; ++step) {
+            sim->advance(dt);
+            lowest = std::min(lowest, sim->omegaZ()[middle]);
+            worstMomentum = std::max(worstMomentum, std::abs(momentum() - start) / w0);
+        }
+        const char* engine = engineName(dimension);
+        EXPECT_GE(lowest, 0.0) << engine << ": the middle sphere's spin reversed";
+        EXPECT_LT(sim->omegaZ()[middle], 0.01 * w0) << engine;
+        EXPECT_LT(worstMomentum, 1e-9) << engine;
+    }
+}
+
+TEST(RollingResistance, SphereHeldByFourWallsKeepsTheLimitsShareOfItsSpin)
+{
+    // A sphere pressed 5 um into the four sides of a tight box, spinning about z: each wall
+    // contact is clamped and would take 1/n = 1/4 of the spin in a step, 1 in all; the
+    // limit (D = 1, scale 1/2) lets the four take 1/2. Velocity Verlet applies half of it
+    // at the start spin and half at the half-step spin: w(dt) = (1 - 1/4)^2 w0 = 0.5625 w0
+    // (without the limit (1 - 1/2)^2 = 0.25). Tolerance 1e-9: the torques are linear in the
+    // spin within the clamp and the sphere does not move.
+    const double w0 = 10.0;
+    const double side = dSmall - 1e-5;
+    for (int dimension : {2, 3}) {
+        Settings s = paperSettings({0.0, side, 0.0, side});
+        s.gravity[1] = 0.0;
+        s.contact.frictionWall = 0.0;
+        s.contact.rollingFrictionWall = 1.0;
+        s.dimension = dimension;
+        s.slabDepth = dimension == 3 ? 0.01 : 0.0;
+        Simulation sim(s);
+        if (dimension == 2) {
+            sim.addParticle(0, 0.5 * side, 0.5 * side, 0.0, 0.0, w0);
+        } else {
+            sim.addParticle(0, {0.5 * side, 0.5 * side, 0.005}, {}, {0.0, 0.0, w0});
+        }
+        const double dt = sim.settings().dt;
+        sim.advance(dt);
+        const char* engine = engineName(dimension);
+        EXPECT_NEAR(sim.omegaZ()[0], 0.5625 * w0, 1e-9 * w0) << engine;
+        for (int step = 0; step < 40; ++step) {
+            sim.advance(dt);
+            EXPECT_GE(sim.omegaZ()[0], 0.0) << engine << ", step " << step;
+        }
     }
 }

@@ -149,8 +149,14 @@ private:
     void batchedWallForces(const WallPick* picked, int m, double historyDt,
                            std::size_t& touching, double& maxOverlap);
 
+    /// With rolling resistance, after the pair forces: as System's (RollingLimit.hpp).
+    template <class Law> void limitRollingTorques();
+
     std::vector<int> touchingScratch_;   // the touching pairs of each group, per step
     std::vector<WallPick> wallPicks_;    // the touching wall contacts, per step
+    std::vector<int> touchingPerGroup_;  // how many of each group's pairs touch, per step
+    std::vector<Eigen::Vector3d> pairRolling_;   // each touching pair's rolling torque, N m
+    std::vector<double> rollingScale_;   // each particle's D_i, then s_i (RollingLimit.hpp)
 };
 
 } // namespace dem

@@ -80,12 +80,19 @@ private:
     /// The two loops with or without rolling resistance, chosen once per step.
     template <class Law, bool Rolling> void sumPairForces(double historyDt);
     template <class Law, bool Rolling> void addWallForcesAndKickWith(double historyDt, bool kick, bool fluid);
+    /// With rolling resistance, after the pair forces: each particle's rolling scale from
+    /// its pair and wall contacts (RollingLimit.hpp), then the pairs' rolling torques scaled
+    /// and added; the walls' are scaled in the wall loop.
+    template <class Law> void limitRollingTorques();
     [[noreturn]] void throwLostParticle() const;
 
     static constexpr double skinStartFraction = 0.4;   // of d_min, the adaptive skin's start
 
     double timeStepBound_;
     std::vector<int> touchingScratch_;   // the touching pairs of each group, per step
+    std::vector<int> touchingPerGroup_;  // how many of each group's pairs touch, per step
+    std::vector<double> pairRolling_;    // each touching pair's rolling torque, N m (rolling only)
+    std::vector<double> rollingScale_;   // each particle's D_i, then s_i (RollingLimit.hpp)
 };
 
 } // namespace dem
