@@ -9,7 +9,6 @@
 #include "PairGroups.hpp"
 #include "RollingLimit.hpp"
 #include "StreamingLoops.hpp"
-#include "WallGeometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -189,56 +188,6 @@ void SlabSystem::sumPairForces(double historyDt)
     };
     sumPairGroups(settings_.nThreads, n, zeroBlock, group, contactCount_, maxOverlap_);
     if constexpr (Rolling) limitRollingTorques<Law>();
-}
-
-template <class Law> void SlabSystem::limitRollingTorques()
-{
-    const Index n = static_cast<Index>(p_.size());
-    const int* wStart = wallContacts_.start.data();
-    double* share = rollingScale_.data();
-    const double dt = settings_.dt;
-    SlabParticles& p = p_;
-#pragma omp parallel num_threads(settings_.nThreads)
-    {
-        const auto [first, last] = threadShare(n);
-        for (Index i = first; i < last; ++i) {
-            for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
-                const PlaneWall3& wall = walls_[wallContacts_.wall[s]];
-                const double overlap = p.radius[i] - wall.distance(p.position(i));
-                if (overlap <= 0.0) continue;
-                const ContactLaw& law = wallLaws_[p.classIndex[i]];
-                const PairGeometry3 c = wallGeometry(p, i, wall, overlap);
-                const double fn = Law::at(overlap, c.vRel.dot(c.nHat), law).fn;
-                const Vec3 rolling = c.omegaRel - c.omegaRel.dot(c.nHat) * c.nHat;
-                const double torque = rollingTorque<3>(c, fn, law).norm();
-                share[i] += rollingCoefficient(torque, rolling.norm(), law) * dt * p.invInertia[i];
-            }
-        }
-        rollingScales(share, static_cast<std::size_t>(first), static_cast<std::size_t>(last));
-    }
-    // The pairs' torques over the radius the torque sums are multiplied by, in list order
-    const int* pi = pairs_.i.data();
-    const int* pj = pairs_.j.data();
-    const int* groupStart = pairs_.groupStart.data();
-    const int* touchingPairs = touchingScratch_.data();
-    const Arrays a(p);
-    auto group = [&](int g, std::size_t&, double&) {
-        const int* picked = touchingPairs + groupStart[g];
-        for (int q = 0; q < touchingPerGroup_[g]; ++q) {
-            const int k = picked[q];
-            const int i = pi[k];
-            const int j = pj[k];
-            const Vec3 torque = rollingScale(share, i, j) * pairRolling_[k];
-            const Vec3 ti = torque / a.radius[i];
-            const Vec3 tj = torque / a.radius[j];
-            a.tx[i] += ti.x(); a.ty[i] += ti.y(); a.tz[i] += ti.z();
-            a.tx[j] -= tj.x(); a.ty[j] -= tj.y(); a.tz[j] -= tj.z();
-        }
-    };
-    std::size_t unusedCount = 0;
-    double unusedOverlap = 0.0;
-    sumPairGroups(settings_.nThreads, p.size(), [](std::size_t, std::size_t) {}, group,
-                  unusedCount, unusedOverlap);
 }
 
 } // namespace dem

@@ -188,55 +188,6 @@ void System::sumPairForces(double historyDt)
     if constexpr (Rolling) limitRollingTorques<Law>();
 }
 
-template <class Law> void System::limitRollingTorques()
-{
-    const Index n = static_cast<Index>(p_.size());
-    const int* wStart = wallContacts_.start.data();
-    double* share = rollingScale_.data();
-    const double dt = settings_.dt;
-#pragma omp parallel num_threads(settings_.nThreads)
-    {
-        const auto [first, last] = threadShare(n);
-        for (Index i = first; i < last; ++i) {
-            const Eigen::Vector2d pos(p_.x[i], p_.y[i]);
-            for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
-                const PlaneWall& w = walls_[wallContacts_.wall[s]];
-                const double overlap = p_.radius[i] - w.distance(pos);
-                if (overlap <= 0.0) continue;
-                const ContactLaw& law = wallLaws_[p_.classIndex[i]];
-                const PairGeometry g = wallGeometry(p_, i, w, overlap);
-                const double fn = Law::at(overlap, g.vRel.dot(g.nHat), law).fn;
-                const double torque = std::abs(rollingTorque<2>(g, fn, law));
-                share[i] += rollingCoefficient(torque, std::abs(g.omegaRel), law) * dt * p_.invInertia[i];
-            }
-        }
-        rollingScales(share, static_cast<std::size_t>(first), static_cast<std::size_t>(last));
-    }
-    // The pairs' torques over the radius the torque sums are multiplied by, in list order
-    const int* pi = pairs_.i.data();
-    const int* pj = pairs_.j.data();
-    const int* groupStart = pairs_.groupStart.data();
-    const int* touchingPairs = touchingScratch_.data();
-    const double* pairRolling = pairRolling_.data();
-    const double* r = p_.radius.data();
-    double* sumFt = p_.torque.data();
-    auto group = [&](int g, std::size_t&, double&) {
-        const int* picked = touchingPairs + groupStart[g];
-        for (int q = 0; q < touchingPerGroup_[g]; ++q) {
-            const int k = picked[q];
-            const int i = pi[k];
-            const int j = pj[k];
-            const double torque = rollingScale(share, i, j) * pairRolling[k];
-            sumFt[i] += torque / r[i];
-            sumFt[j] -= torque / r[j];
-        }
-    };
-    std::size_t unusedCount = 0;
-    double unusedOverlap = 0.0;
-    sumPairGroups(settings_.nThreads, p_.size(), [](std::size_t, std::size_t) {}, group,
-                  unusedCount, unusedOverlap);
-}
-
 void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
 {
     withContactLaw([&](auto law, auto rolling) {
