@@ -252,8 +252,8 @@ void SlabSystem::addWallForcesAndKickWith(double historyDt, bool kick, bool flui
                 c.xiT = wXi[s];
                 const PairForce3 f = contactForce<3, Law, true>(c, wallLaws[p.classIndex[i]], historyDt);
                 p.fx[i] += f.force.x(); p.fy[i] += f.force.y(); p.fz[i] += f.force.z();
-                // The tangential torque and the rolling torque, scaled (limitRollingTorques)
-                const Vec3 torque = ri * c.nHat.cross(f.ft) + rollingScale_[i] * f.rollingTorque;
+                // The rolling part scaled by the particle's limit (limitRollingTorques)
+                const Vec3 torque = f.torqueI + (rollingScale_[i] - 1.0) * f.rollingTorque;
                 p.tx[i] += torque.x(); p.ty[i] += torque.y(); p.tz[i] += torque.z();
                 wXi[s] = f.xiT;
                 ++touching;

@@ -260,11 +260,9 @@ void System::addWallForcesAndKickWith(double historyDt, bool kick, bool fluid)
                 const PairForce f = contactForce<2, Law, Rolling>(g, wallLaws[p.classIndex[i]], historyDt);
                 fx += f.force.x();
                 fy += f.force.y();
-                if constexpr (Rolling) {
-                    torque += ri * f.ft + rollingScale[i] * f.rollingTorque;
-                } else {
-                    torque += f.torqueI;
-                }
+                torque += f.torqueI;
+                // The rolling part scaled by the particle's limit (limitRollingTorques)
+                if constexpr (Rolling) torque += (rollingScale[i] - 1.0) * f.rollingTorque;
                 wXi[s] = f.xiT;
                 ++touching;
                 maxOverlap = std::max(maxOverlap, overlap);
