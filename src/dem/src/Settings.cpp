@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <numeric>
 #include <sstream>
+#include <utility>
 
 namespace dem {
 
@@ -130,6 +131,10 @@ ContactCoefficients wallCoefficients(const ContactSettings& c, int a)
 
 std::string pairName(const Settings& s, int a, int b)
 {
+    for (const PairContactSettings& p : s.contact.pairs) {   // in the order given
+        if (p.classA == b && p.classB == a) std::swap(a, b);
+        if (p.classA == a && p.classB == b) break;
+    }
     return "contact pair '" + s.classes[a].name + "-" + s.classes[b].name + "'";
 }
 

@@ -168,7 +168,7 @@ TEST(Settings, BadPairAndWallCoefficients)
     }, {"contact pair 'small-large' rollingFriction = nan is outside [0, inf)"});
     expectBadSetting([&](Settings& s) {
         s.contact.pairs = {pair(0, 1), pair(1, 0)};
-    }, {"contact pair 'large-small' is given twice (as 'small-large' and 'large-small')"});
+    }, {"contact pair 'small-large' is given twice (as 'small-large' and 'large-small')"});
     expectBadSetting([&](Settings& s) { s.contact.pairs = {pair(0, 2)}; },
                      {"contact pairs[0].classB = 2 is outside [0, 1]"});
     WallContactSettings wall;

@@ -37,7 +37,8 @@ namespace dem {
 void validateSettings(const Settings& settings);
 
 /// The names of a pair of classes' and of a class-wall contact's own coefficients in
-/// messages: "contact pair 'small-large'", "contact wall 'large'".
+/// messages: "contact pair 'small-large'" (in the order of ContactSettings::pairs if given
+/// there), "contact wall 'large'".
 std::string pairName(const Settings& settings, int a, int b);
 std::string wallName(const Settings& settings, int a);
 
