@@ -75,6 +75,7 @@ EngineBase<Derived, Traits>::EngineBase(const Settings& settings, std::vector<Wa
         for (int b = 0; b < nClasses_; ++b) {
             const double mEff = m[a] * m[b] / (m[a] + m[b]);
             const double rEff = r[a] * r[b] / (r[a] + r[b]);
+            const ContactCoefficients own = pairCoefficients(c, a, b);
             ContactLaw law = hertzMindlin_
                 ? makeHertzMindlinLaw(
                       mEff, rEff,
@@ -82,13 +83,15 @@ EngineBase<Derived, Traits>::EngineBase(const Settings& settings, std::vector<Wa
                                              cls[b].youngsModulus, cls[b].poissonRatio),
                       effectiveShearModulus(cls[a].youngsModulus, cls[a].poissonRatio,
                                             cls[b].youngsModulus, cls[b].poissonRatio),
-                      c.restitution, c.frictionParticle, c.tangentialDampingRatio)
-                : makeContactLaw(mEff, c.kn, c.kt, c.restitution, c.frictionParticle,
+                      own.restitution, own.friction, c.tangentialDampingRatio)
+                : makeContactLaw(mEff, c.kn, c.kt, own.restitution, own.friction,
                                  c.tangentialDampingRatio);
-            addRollingResistance(law, c.rollingFriction, rEff,
+            addRollingResistance(law, own.rollingFriction, rEff,
                                  inertia[a] * inertia[b] / (inertia[a] + inertia[b]), settings_.dt);
+            rolling_ = rolling_ || own.rollingFriction > 0.0;
             pairLaws_.push_back(law);
         }
+        const ContactCoefficients own = wallCoefficients(c, a);
         ContactLaw law = hertzMindlin_
             ? makeHertzMindlinLaw(
                   m[a], r[a],
@@ -96,13 +99,13 @@ EngineBase<Derived, Traits>::EngineBase(const Settings& settings, std::vector<Wa
                                          c.wallYoungsModulus, c.wallPoissonRatio),
                   effectiveShearModulus(cls[a].youngsModulus, cls[a].poissonRatio,
                                         c.wallYoungsModulus, c.wallPoissonRatio),
-                  c.restitutionWall, c.frictionWall, c.tangentialDampingRatio)
-            : makeContactLaw(m[a], c.kn, c.kt, c.restitutionWall, c.frictionWall,
+                  own.restitution, own.friction, c.tangentialDampingRatio)
+            : makeContactLaw(m[a], c.kn, c.kt, own.restitution, own.friction,
                              c.tangentialDampingRatio);
-        addRollingResistance(law, c.rollingFrictionWall, r[a], inertia[a], settings_.dt);
+        addRollingResistance(law, own.rollingFriction, r[a], inertia[a], settings_.dt);
+        rolling_ = rolling_ || own.rollingFriction > 0.0;
         wallLaws_.push_back(law);
     }
-    rolling_ = c.rollingFriction > 0.0 || c.rollingFrictionWall > 0.0;
 }
 
 template <class Derived, class Traits>

@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <numeric>
 #include <sstream>
+#include <utility>
 
 namespace dem {
 
@@ -51,7 +52,96 @@ std::string className(const Settings& s, int k)
     return "classes[" + std::to_string(k) + "] ('" + s.classes[k].name + "')";
 }
 
+/// The per-pair and per-wall coefficients: classes in range, each pair and class once (a-b
+/// and b-a are one pair), values in the global entries' ranges.
+void validateOwnCoefficients(const Settings& s)
+{
+    const ContactSettings& c = s.contact;
+    const int n = static_cast<int>(s.classes.size());
+    auto requireClass = [n](int k, const std::string& what) {
+        if (k < 0 || k >= n) {
+            throw Error(what + " = " + std::to_string(k) + " is outside [0, "
+                        + std::to_string(n - 1) + "] (an index of classes)");
+        }
+    };
+    for (std::size_t q = 0; q < c.pairs.size(); ++q) {
+        const PairContactSettings& p = c.pairs[q];
+        const std::string where = "contact pairs[" + std::to_string(q) + "]";
+        requireClass(p.classA, where + ".classA");
+        requireClass(p.classB, where + ".classB");
+        const std::string name = pairName(s, p.classA, p.classB);
+        for (std::size_t r = 0; r < q; ++r) {
+            const PairContactSettings& o = c.pairs[r];
+            if ((o.classA == p.classA && o.classB == p.classB)
+                || (o.classA == p.classB && o.classB == p.classA)) {
+                throw Error(name + " is given twice (as '"
+                            + s.classes[o.classA].name + "-" + s.classes[o.classB].name
+                            + "' and '" + s.classes[p.classA].name + "-"
+                            + s.classes[p.classB].name + "'): each pair of classes once");
+            }
+        }
+        if (p.restitution) requireRestitution(*p.restitution, name + " restitution");
+        if (p.frictionParticle) requireNonNegative(*p.frictionParticle, name + " frictionParticle");
+        if (p.rollingFriction) requireNonNegative(*p.rollingFriction, name + " rollingFriction");
+    }
+    for (std::size_t q = 0; q < c.walls.size(); ++q) {
+        const WallContactSettings& w = c.walls[q];
+        requireClass(w.classIndex, "contact walls[" + std::to_string(q) + "].classIndex");
+        const std::string name = wallName(s, w.classIndex);
+        for (std::size_t r = 0; r < q; ++r) {
+            if (c.walls[r].classIndex == w.classIndex) {
+                throw Error(name + " is given twice: each class once");
+            }
+        }
+        if (w.restitutionWall) requireRestitution(*w.restitutionWall, name + " restitutionWall");
+        if (w.frictionWall) requireNonNegative(*w.frictionWall, name + " frictionWall");
+        if (w.rollingFrictionWall) {
+            requireNonNegative(*w.rollingFrictionWall, name + " rollingFrictionWall");
+        }
+    }
+}
+
 } // namespace
+
+ContactCoefficients pairCoefficients(const ContactSettings& c, int a, int b)
+{
+    ContactCoefficients own{c.restitution, c.frictionParticle, c.rollingFriction};
+    for (const PairContactSettings& p : c.pairs) {
+        if ((p.classA == a && p.classB == b) || (p.classA == b && p.classB == a)) {
+            own.restitution = p.restitution.value_or(own.restitution);
+            own.friction = p.frictionParticle.value_or(own.friction);
+            own.rollingFriction = p.rollingFriction.value_or(own.rollingFriction);
+        }
+    }
+    return own;
+}
+
+ContactCoefficients wallCoefficients(const ContactSettings& c, int a)
+{
+    ContactCoefficients own{c.restitutionWall, c.frictionWall, c.rollingFrictionWall};
+    for (const WallContactSettings& w : c.walls) {
+        if (w.classIndex == a) {
+            own.restitution = w.restitutionWall.value_or(own.restitution);
+            own.friction = w.frictionWall.value_or(own.friction);
+            own.rollingFriction = w.rollingFrictionWall.value_or(own.rollingFriction);
+        }
+    }
+    return own;
+}
+
+std::string pairName(const Settings& s, int a, int b)
+{
+    for (const PairContactSettings& p : s.contact.pairs) {   // in the order given
+        if (p.classA == b && p.classB == a) std::swap(a, b);
+        if (p.classA == a && p.classB == b) break;
+    }
+    return "contact pair '" + s.classes[a].name + "-" + s.classes[b].name + "'";
+}
+
+std::string wallName(const Settings& s, int a)
+{
+    return "contact wall '" + s.classes[a].name + "'";
+}
 
 long subStepCount(double dtOuter, double dt)
 {
@@ -108,6 +198,7 @@ void validateSettings(const Settings& s)
     requireNonNegative(c.tangentialDampingRatio, "tangentialDampingRatio");
     requireNonNegative(c.rollingFriction, "rollingFriction");
     requireNonNegative(c.rollingFrictionWall, "rollingFrictionWall");
+    validateOwnCoefficients(s);
     if (c.law == ContactLawType::hertzMindlin) {
         // The moduli of every material; kt is the linear law's (Mindlin's comes from them)
         auto requireMaterial = [](double youngs, double poisson, const std::string& youngsName,

@@ -250,7 +250,7 @@ void SlabSystem::load(const std::string& path)
         // The key as the disc engine's with the depth in the skin's place, which the
         // comparison leaves out: named on its own
         std::vector<Difference> differ = compareSettingsKeys(key, here, settings_);
-        if (key.size() == here.size() && key.back() != here.back()) {
+        if (!key.empty() && key[0] == here[0] && key.back() != here.back()) {
             const auto [inFile, asked] = textsApart(key.back(), here.back());
             differ.push_back({"slabDepth", inFile + " m", asked + " m"});
         }

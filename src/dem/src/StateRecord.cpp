@@ -4,6 +4,7 @@
 // differs (a refused file names the class, the setting, its value and the one asked for).
 
 #include "dem/StateRecord.hpp"
+#include "dem/EngineBase.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +16,7 @@ namespace dem {
 
 namespace {
 
-/// Names of the settings key's entries, in its order (the skin last).
+/// Names of the settings key's entries, in its order, before the own coefficients and the skin.
 std::vector<std::string> settingsKeyNames(const Settings& s)
 {
     std::vector<std::string> names{"number of size classes"};
@@ -36,8 +37,41 @@ std::vector<std::string> settingsKeyNames(const Settings& s)
         names.push_back("class '" + c.name + "' youngsModulus");
         names.push_back("class '" + c.name + "' poissonRatio");
     }
-    names.emplace_back("neighbour skin");
     return names;
+}
+
+/// One entry of the own coefficients: a pair's or a class-wall contact's coefficient, the
+/// global entry it replaces, and its value.
+struct OwnEntry {
+    std::string name;     ///< e.g. "contact pair 'small-large' restitution"
+    std::string global;   ///< e.g. "contact restitution"
+    double value;
+};
+
+/// Every kind of contact's coefficients, in the key's order: the pairs of classes a <= b,
+/// then each class on the walls; restitution, friction, rolling friction each.
+std::vector<OwnEntry> ownEntries(const Settings& s)
+{
+    std::vector<OwnEntry> out;
+    const int n = static_cast<int>(s.classes.size());
+    for (int a = 0; a < n; ++a) {
+        for (int b = a; b < n; ++b) {
+            const ContactCoefficients own = pairCoefficients(s.contact, a, b);
+            const std::string name = pairName(s, a, b);
+            out.push_back({name + " restitution", "contact restitution", own.restitution});
+            out.push_back({name + " frictionParticle", "contact frictionParticle", own.friction});
+            out.push_back({name + " rollingFriction", "contact rollingFriction", own.rollingFriction});
+        }
+    }
+    for (int a = 0; a < n; ++a) {
+        const ContactCoefficients own = wallCoefficients(s.contact, a);
+        const std::string name = wallName(s, a);
+        out.push_back({name + " restitutionWall", "contact restitutionWall", own.restitution});
+        out.push_back({name + " frictionWall", "contact frictionWall", own.friction});
+        out.push_back({name + " rollingFrictionWall", "contact rollingFrictionWall",
+                       own.rollingFriction});
+    }
+    return out;
 }
 
 /// The law as the key stores it (0 linear, 1 HertzMindlin) and its name.
@@ -127,6 +161,17 @@ std::vector<double> settingsKey(const Settings& s, double skin)
         key.push_back(m.youngsModulus);
         key.push_back(m.poissonRatio);
     }
+    // Every contact's own coefficients where one differs from its global entry: without them
+    // the key (and the file) is the one of the global coefficients alone
+    const std::vector<std::string> names = settingsKeyNames(s);
+    const std::vector<OwnEntry> own = ownEntries(s);
+    const bool anyOwn = std::any_of(own.begin(), own.end(), [&](const OwnEntry& e) {
+        const auto global = std::find(names.begin(), names.end(), e.global) - names.begin();
+        return e.value != key[static_cast<std::size_t>(global)];
+    });
+    if (anyOwn) {
+        for (const OwnEntry& e : own) key.push_back(e.value);
+    }
     key.push_back(skin);
     return key;
 }
@@ -135,27 +180,30 @@ std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
                                             const std::vector<double>& here, const Settings& s)
 {
     const std::vector<std::string> names = settingsKeyNames(s);
-    if (inFile.size() != here.size() || inFile.empty() || inFile[0] != here[0]
-        || here.size() != names.size()) {
+    const std::vector<OwnEntry> own = ownEntries(s);
+    const std::size_t base = names.size();
+    // A key holds the own coefficients or not, and the skin last
+    auto holdsOwn = [&](const std::vector<double>& key) { return key.size() == base + own.size() + 1; };
+    auto valid = [&](const std::vector<double>& key) { return key.size() == base + 1 || holdsOwn(key); };
+    if (inFile.empty() || here.empty() || inFile[0] != here[0] || !valid(inFile) || !valid(here)) {
         // Another number of classes (or a damaged key): the positions do not correspond.
         const std::string n = inFile.empty() ? std::string("none")
                                              : std::to_string(static_cast<long>(inFile[0]));
         return {{"number of size classes", n, std::to_string(s.classes.size())}};
     }
-    const std::size_t box = static_cast<std::size_t>(    // box xMin, xMax, yMin, yMax
-        std::find(names.begin(), names.end(), "box xMin") - names.begin());
+    auto at = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+    };
+    const std::size_t box = at("box xMin");   // box xMin, xMax, yMin, yMax
     const double extent = extentOf({here[box], here[box + 1], here[box + 2], here[box + 3]});
-    const std::size_t law = static_cast<std::size_t>(
-        std::find(names.begin(), names.end(), "contact law") - names.begin());
-    // The moduli, from the walls' to the classes' last (before the skin): the linear law
-    // does not read them
-    const std::size_t moduli = static_cast<std::size_t>(
-        std::find(names.begin(), names.end(), "contact wallYoungsModulus") - names.begin());
+    const std::size_t law = at("contact law");
+    // The moduli, from the walls' to the classes' last: the linear law does not read them
+    const std::size_t moduli = at("contact wallYoungsModulus");
     const bool bothLinear = inFile[law] == 0.0 && here[law] == 0.0;
     // and HertzMindlin does not read the linear law's kn and kt (kt stays the default)
     const bool bothHertz = inFile[law] == 1.0 && here[law] == 1.0;
     std::vector<Difference> d;
-    for (std::size_t k = 0; k + 1 < here.size(); ++k) {   // not the skin
+    for (std::size_t k = 0; k < base; ++k) {
         if (inFile[k] == here[k]) continue;
         if (k >= box && k < box + 4 && sameCoordinate(inFile[k], here[k], extent)) continue;
         if (bothLinear && k >= moduli) continue;
@@ -170,6 +218,15 @@ std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
             if (here[k] < 0) e.here += " (2/7 kn)";
         }
         d.push_back(e);
+    }
+    // Each contact's coefficient: its own where the key holds them, else the global entry's.
+    // A difference of contacts that both take the global entry is that entry's, named above.
+    for (std::size_t q = 0; q < own.size(); ++q) {
+        const std::size_t global = at(own[q].global);
+        const double a = holdsOwn(inFile) ? inFile[base + q] : inFile[global];
+        const double b = holdsOwn(here) ? here[base + q] : here[global];
+        if (a == b || (a == inFile[global] && b == here[global])) continue;
+        d.push_back(differ(own[q].name, a, b));
     }
     return d;
 }

@@ -5,6 +5,7 @@
 // sized for; the check validateSettings makes of them and the warnings near them.
 
 #include "dem/ContactLaw.hpp"
+#include "dem/EngineBase.hpp"
 #include "dem/System.hpp"
 
 #include <algorithm>
@@ -28,6 +29,7 @@ std::string className(const Settings& s, int k)
 
 /// One kind of contact: a pair of classes or a class on a wall.
 struct ContactKind {
+    int a, b;            ///< the classes (b = a on a wall)
     int lighter;         ///< the lighter class
     double m;            ///< its mass, kg
     double mEff;         ///< effective mass, kg
@@ -53,14 +55,29 @@ template <class Body> void forEachContactKind(const Settings& s, const Body& bod
             const double eStar = hertz ? effectiveYoungsModulus(ca.youngsModulus, ca.poissonRatio,
                                                                 cb.youngsModulus, cb.poissonRatio)
                                        : 0.0;
-            body(ContactKind{static_cast<int>(ma <= mb ? a : b), std::min(ma, mb),
+            body(ContactKind{static_cast<int>(a), static_cast<int>(b),
+                             static_cast<int>(ma <= mb ? a : b), std::min(ma, mb),
                              ma * mb / (ma + mb), ra * rb / (ra + rb), eStar, false});
         }
         const double eStar = hertz ? effectiveYoungsModulus(ca.youngsModulus, ca.poissonRatio,
                                                             c.wallYoungsModulus, c.wallPoissonRatio)
                                    : 0.0;
-        body(ContactKind{static_cast<int>(a), ma, ma, ra, eStar, true});
+        body(ContactKind{static_cast<int>(a), static_cast<int>(a), static_cast<int>(a), ma, ma,
+                         ra, eStar, true});
     }
+}
+
+/// The restitution of a kind of contact and the entry that gives it: the global one, or the
+/// pair's or the wall's own.
+std::pair<std::string, double> restitutionOf(const Settings& s, const ContactKind& k)
+{
+    const ContactSettings& c = s.contact;
+    if (k.wall) {
+        const double e = wallCoefficients(c, k.a).restitution;
+        return {e == c.restitutionWall ? "restitutionWall" : wallName(s, k.a) + " restitutionWall", e};
+    }
+    const double e = pairCoefficients(c, k.a, k.b).restitution;
+    return {e == c.restitution ? "restitution" : pairName(s, k.a, k.b) + " restitution", e};
 }
 
 /// Hertz's peak overlap of a head-on impact at speed v, m.
@@ -74,7 +91,7 @@ double hertzPeakOverlap(const ContactKind& k, double v)
 double largestNormalDamping(const Settings& s, const ContactKind& k)
 {
     const ContactSettings& c = s.contact;
-    const double e = k.wall ? c.restitutionWall : c.restitution;
+    const double e = restitutionOf(s, k).second;
     if (c.law != ContactLawType::hertzMindlin) return dampingFromRestitution(k.mEff, c.kn, e);
     const double hertzKn = 4.0 / 3.0 * k.eStar * std::sqrt(k.rEff);
     const double delta = hertzPeakOverlap(k, hertzSpeed(s));
@@ -157,7 +174,8 @@ double pairContactTime(const Settings& settings)
     int k = 0;
     timeStepBound(settings, &k);
     const double mEff = 0.5 * classMass(settings.classes[k]);
-    return linearContactDuration(mEff, c.kn, dampingFromRestitution(mEff, c.kn, c.restitution));
+    const double e = pairCoefficients(c, k, k).restitution;
+    return linearContactDuration(mEff, c.kn, dampingFromRestitution(mEff, c.kn, e));
 }
 
 // Measured with the paper's particles (TestStepBound; docs/theory/numerics.md): at dt = t_c/10 a
@@ -194,8 +212,7 @@ void checkTimeStep(const Settings& s)
     // nearly elastically whatever restitution asked for (docs/theory/numerics.md, "The DEM step's bound")
     const auto [kind, dashpot] = dashpotLimited(s);
     if (s.dt > dashpot) {
-        const std::string entry = kind.wall ? "restitutionWall" : "restitution";
-        const double e = kind.wall ? c.restitutionWall : c.restitution;
+        const auto [entry, e] = restitutionOf(s, kind);
         throw Error("dt = " + formatValue(s.dt) + " s (the DEM step, deltaT) is above the "
                     "dashpot's stability bound at " + entry + " = " + formatValue(e) + ": the "
                     "normal damping eta of a " + className(s, kind.lighter)
@@ -213,10 +230,10 @@ std::vector<std::string> settingsWarnings(const Settings& s)
     const ContactSettings& c = s.contact;
     const auto [kind, dashpot] = dashpotLimited(s);
     if (s.dt > dashpotWarnFraction * dashpot) {
-        const std::string entry = kind.wall ? "restitutionWall" : "restitution";
+        const auto [entry, e] = restitutionOf(s, kind);
         out.push_back("dt = " + formatValue(s.dt) + " s (the DEM step, deltaT) is near the "
                       "dashpot's stability bound " + formatValue(dashpot) + " s at " + entry
-                      + " = " + formatValue(kind.wall ? c.restitutionWall : c.restitution)
+                      + " = " + formatValue(e)
                       + " (eta dt/m_eff = " + formatValue(s.dt / dashpot) + "): the rebound of "
                       "strongly damped contacts is off by up to 10 %; a step of at most "
                       + formatValue(dashpotWarnFraction * dashpot) + " s is accurate");

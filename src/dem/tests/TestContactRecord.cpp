@@ -1,14 +1,17 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A bed records every contact setting that shapes it (StateRecord.cpp's settings key): the
-// contact law, the tangential damping ratio, the rolling friction and the moduli. A bed
-// packed with others is refused naming each; the moduli only count under HertzMindlin.
+// contact law, the tangential damping ratio, the rolling friction, the moduli and the
+// coefficients of pairs and walls of their own. A bed packed with others is refused naming
+// each; the moduli only count under HertzMindlin.
 
 #include "TestHelpers.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 using namespace dem;
@@ -107,4 +110,115 @@ TEST(ContactRecord, HertzMindlinBedLoadsWithAnotherLinearStiffness)
     const std::string what = loadedUnder(hertzSettings(), linear, "bedHertzToLinear.state");
     EXPECT_NE(what.find("contact law = HertzMindlin in the file, linear here"), std::string::npos) << what;
     EXPECT_NE(what.find("contact kn"), std::string::npos) << what;   // the linear side reads kn
+}
+
+namespace {
+
+Settings inEngine(Settings s, int dimension)
+{
+    s.dimension = dimension;
+    s.slabDepth = dimension == 3 ? 0.0075 : 0.0;
+    return s;
+}
+
+/// `s` with the pair small-large's own restitution e (and rolling friction muR, if > 0).
+Settings withPair(Settings s, double e, double muR = 0.0)
+{
+    PairContactSettings p;
+    p.classB = 1;
+    p.restitution = e;
+    if (muR > 0.0) p.rollingFriction = muR;
+    s.contact.pairs = {p};
+    return s;
+}
+
+std::string bytesOf(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+} // namespace
+
+// A pair's and a class-wall contact's own coefficients are in the record: a bed or a restart
+// made with others is refused naming the pair or the wall and the entry, in both engines; a
+// change of a global entry that the pairs with their own do not take is named once, as that
+// entry.
+TEST(ContactRecord, AnotherPairOrWallCoefficientIsNamed)
+{
+    for (int dimension : {2, 3}) {
+        SCOPED_TRACE(dimension == 2 ? "2D" : "slab");
+        const Settings base = inEngine(settings(), dimension);
+        std::string what = loadedUnder(withPair(base, 0.9), withPair(base, 0.8), "bedPair.state");
+        EXPECT_NE(what.find("other settings: contact pair 'small-large' restitution = 0.9 in the "
+                            "file, 0.8 here"),
+                  std::string::npos)
+            << what;
+        what = loadedUnder(withPair(base, 0.9, 0.025), base, "bedPairGone.state");
+        EXPECT_NE(what.find("other settings: contact pair 'small-large' restitution = 0.9 in the "
+                            "file, 0.97 here; contact pair 'small-large' rollingFriction = 0.025 "
+                            "in the file, 0 here"),
+                  std::string::npos)
+            << what;
+
+        Settings wall = base;
+        WallContactSettings w;
+        w.classIndex = 1;
+        w.frictionWall = 0.3;
+        wall.contact.walls = {w};
+        what = loadedUnder(base, wall, "bedWall.state");
+        EXPECT_NE(what.find("other settings: contact wall 'large' frictionWall = 0.1 in the file, "
+                            "0.3 here"),
+                  std::string::npos)
+            << what;
+
+        Settings otherGlobal = withPair(base, 0.9);
+        otherGlobal.contact.restitution = 0.95;
+        what = loadedUnder(withPair(base, 0.9), otherGlobal, "bedGlobal.state");
+        EXPECT_NE(what.find("other settings: contact restitution = 0.97 in the file, 0.95 here"),
+                  std::string::npos)
+            << what;
+        EXPECT_EQ(what.find("contact pair"), std::string::npos) << what;
+
+        // A restart is refused alike
+        const std::string path = tempPath("restartPair.state");
+        Simulation run(withPair(base, 0.9));
+        run.packBed(smallBedRecipe());
+        run.advance(0.0005);
+        run.save(path);
+        Simulation other(withPair(base, 0.85));
+        what = errorOf([&] { other.load(path); });
+        EXPECT_NE(what.find("state file '" + path + "' was written with other settings: contact "
+                            "pair 'small-large' restitution = 0.9 in the file, 0.85 here"),
+                  std::string::npos)
+            << what;
+        Simulation same(withPair(base, 0.9));
+        EXPECT_EQ(errorOf([&] { same.load(path); }), "");
+        std::remove(path.c_str());
+    }
+}
+
+// Pairs and walls given the global values are the global coefficients: the file is the bytes
+// of one written without them, and the two load each other's.
+TEST(ContactRecord, OwnCoefficientsEqualToTheGlobalOnesWriteTheSameFile)
+{
+    for (int dimension : {2, 3}) {
+        SCOPED_TRACE(dimension == 2 ? "2D" : "slab");
+        const Settings base = inEngine(settings(), dimension);
+        Settings same = withPair(base, base.contact.restitution);
+        WallContactSettings w;
+        w.frictionWall = base.contact.frictionWall;
+        same.contact.walls = {w};
+        const std::string a = tempPath("bedWithout.state"), b = tempPath("bedWith.state");
+        Simulation without(base), with(same);
+        without.packBed(smallBedRecipe());
+        with.packBed(smallBedRecipe());
+        without.save(a);
+        with.save(b);
+        EXPECT_TRUE(bytesOf(a) == bytesOf(b));
+        EXPECT_EQ(loadedUnder(base, same, "bedSame.state"), "");
+        EXPECT_EQ(loadedUnder(same, base, "bedSame.state"), "");
+        std::remove(a.c_str());
+        std::remove(b.c_str());
+    }
 }

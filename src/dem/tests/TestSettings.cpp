@@ -144,3 +144,70 @@ TEST(Settings, NaNParticleCountsAsLost)
         expectError([&] { sim.advance(1e-4); }, {named.c_str(), "left the box"});
     }
 }
+
+TEST(Settings, BadPairAndWallCoefficients)
+{
+    // The global entries' ranges, each named with its pair or class
+    auto pair = [](int a, int b) {
+        PairContactSettings p;
+        p.classA = a;
+        p.classB = b;
+        return p;
+    };
+    expectBadSetting([&](Settings& s) {
+        s.contact.pairs = {pair(1, 0)};
+        s.contact.pairs[0].restitution = 1.2;
+    }, {"contact pair 'large-small' restitution = 1.2 is outside (0, 1]"});
+    expectBadSetting([&](Settings& s) {
+        s.contact.pairs = {pair(0, 0)};
+        s.contact.pairs[0].frictionParticle = -0.1;
+    }, {"contact pair 'small-small' frictionParticle = -0.1 is outside [0, inf)"});
+    expectBadSetting([&](Settings& s) {
+        s.contact.pairs = {pair(0, 1)};
+        s.contact.pairs[0].rollingFriction = NAN;
+    }, {"contact pair 'small-large' rollingFriction = nan is outside [0, inf)"});
+    expectBadSetting([&](Settings& s) {
+        s.contact.pairs = {pair(0, 1), pair(1, 0)};
+    }, {"contact pair 'small-large' is given twice (as 'small-large' and 'large-small')"});
+    expectBadSetting([&](Settings& s) { s.contact.pairs = {pair(0, 2)}; },
+                     {"contact pairs[0].classB = 2 is outside [0, 1]"});
+    WallContactSettings wall;
+    wall.classIndex = 1;
+    wall.restitutionWall = 0.0;
+    expectBadSetting([&](Settings& s) { s.contact.walls = {wall}; },
+                     {"contact wall 'large' restitutionWall = 0 is outside (0, 1]", "infinite damping"});
+    wall.restitutionWall.reset();
+    wall.frictionWall = -1.0;
+    expectBadSetting([&](Settings& s) { s.contact.walls = {wall}; },
+                     {"contact wall 'large' frictionWall = -1 is outside [0, inf)"});
+    wall.frictionWall.reset();
+    wall.rollingFrictionWall = -0.5;
+    expectBadSetting([&](Settings& s) { s.contact.walls = {wall}; },
+                     {"contact wall 'large' rollingFrictionWall = -0.5 is outside [0, inf)"});
+    wall.rollingFrictionWall.reset();
+    expectBadSetting([&](Settings& s) { s.contact.walls = {wall, wall}; },
+                     {"contact wall 'large' is given twice"});
+    wall.classIndex = -1;
+    expectBadSetting([&](Settings& s) { s.contact.walls = {wall}; },
+                     {"contact walls[0].classIndex = -1 is outside [0, 1]"});
+}
+
+TEST(Settings, DashpotBoundTakesThePairsOwnRestitution)
+{
+    // A pair's own small restitution has the largest damping: the dashpot's bound is that
+    // pair's m_eff/eta_n (eta_n from the clamped oscillator of TestHelpers; 1e-9, the
+    // bisections' round-off), and a larger step is refused naming the pair's entry
+    Settings s = paperSettings(box);
+    PairContactSettings p;
+    p.classB = 1;
+    p.restitution = 0.01;
+    s.contact.pairs = {p};
+    const double ms = sphereMass(dSmall), ml = sphereMass(dLarge), mEff = ms * ml / (ms + ml);
+    const double expected = mEff / etaFor(mEff, s.contact.kn, 0.01);
+    EXPECT_NEAR(dashpotTimeStep(s), expected, 1e-9 * expected);
+    s.dt = 1.01 * expected;
+    expectError([&] { Simulation sim(s); },
+                {"dashpot's stability bound at contact pair 'small-large' restitution = 0.01"});
+    s.dt = 0.99 * expected;
+    EXPECT_NO_THROW(Simulation sim(s));
+}

@@ -293,3 +293,37 @@ TEST(StateConversion, PreviousVersionContinuesWithTheSameBits)
             << e;
     }
 }
+
+// A state of the previous version has no coefficients of pairs or walls of their own: it
+// loads in a run whose pairs take the global ones, and one with a pair's own is refused
+// naming it.
+TEST(StateConversion, ConvertedStateIsOfTheGlobalCoefficients)
+{
+    for (int dimension : {2, 3}) {
+        SCOPED_TRACE("dimension " + std::to_string(dimension));
+        const std::uint32_t previous = dimension == 2 ? discStateVersion - 1 : slabStateVersion - 1;
+        const std::string path = fileName("global" + std::to_string(dimension));
+        const std::string b = savedBed(dimension, path);
+        std::string expected;
+        const std::string old = path + ".previous";
+        writeAll(old, dimension == 2 ? olderDisc(b, previous, expected)
+                                     : olderSlab(b, previous, expected, dSmall));
+        convertState(old, old + ".converted");
+
+        Settings same = settingsOf(dimension);
+        PairContactSettings p;
+        p.classB = 1;
+        p.restitution = same.contact.restitution;
+        same.contact.pairs = {p};
+        Simulation loads(same);
+        EXPECT_EQ(errorOf([&] { loads.load(old + ".converted"); }), "");
+
+        Settings own = same;
+        own.contact.pairs[0].restitution = 0.8;
+        Simulation refused(own);
+        const std::string e = errorOf([&] { refused.load(old + ".converted"); });
+        EXPECT_TRUE(has(e, "was written with other settings: contact pair 'small-large' "
+                           "restitution = 0.97 in the file, 0.8 here"))
+            << e;
+    }
+}

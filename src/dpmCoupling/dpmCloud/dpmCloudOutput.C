@@ -88,6 +88,43 @@ Foam::scalar Foam::dpmCloud::gasSpeedSum() const
 }
 
 
+void Foam::dpmCloud::reportContact(Ostream& os) const
+{
+    const dem::ContactSettings& c = engine_.dem().settings().contact;
+    forAll(classNames_, a)
+    {
+        for (label b = a; b < classNames_.size(); ++b)
+        {
+            bool given = false;
+            for (const dem::PairContactSettings& p : c.pairs)
+            {
+                given = given || (p.classA == a && p.classB == b)
+                     || (p.classA == b && p.classB == a);
+            }
+            const dem::ContactCoefficients k = dem::pairCoefficients(c, a, b);
+            os  << "    contact " << classNames_[a] << "-" << classNames_[b]
+                << ": restitution " << k.restitution << ", frictionParticle "
+                << k.friction << ", rollingFriction " << k.rollingFriction
+                << (given ? " (contact/pairs)" : "") << nl;
+        }
+    }
+    forAll(classNames_, a)
+    {
+        bool given = false;
+        for (const dem::WallContactSettings& w : c.walls)
+        {
+            given = given || w.classIndex == a;
+        }
+        const dem::ContactCoefficients k = dem::wallCoefficients(c, a);
+        os  << "    contact " << classNames_[a]
+            << " on the walls: restitutionWall " << k.restitution
+            << ", frictionWall " << k.friction
+            << ", rollingFrictionWall " << k.rollingFriction
+            << (given ? " (contact/walls)" : "") << nl;
+    }
+}
+
+
 void Foam::dpmCloud::report(Ostream& os) const
 {
     const dem::Settings& s = engine_.dem().settings();
@@ -102,6 +139,7 @@ void Foam::dpmCloud::report(Ostream& os) const
             << " particles, d = " << s.classes[k].diameter*1e3 << " mm, rho = "
             << s.classes[k].density << " kg/m3, mass fraction " << w[k] << nl;
     }
+    reportContact(os);
     os  << "    total mass " << engine_.totalMass() << " kg" << nl
         << "    drag model " << drag_->type()
         << (exchange_.mixtureNeeded() ? " (with the mixture of each cell)" : "")

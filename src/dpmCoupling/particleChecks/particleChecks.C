@@ -68,6 +68,36 @@ void Foam::particleChecks::entries(const Time& time) const
         dict_.subOrEmptyDict("contact"), names::contact(), where + "/contact",
         wordHashSet(), string(), {top, sizeClass, initialBed, gas}
     );
+    // A pair's or a wall's own coefficients (their names: particleEngine)
+    const dictionary contactDict(dict_.subOrEmptyDict("contact"));
+    const entryHome pairs
+    {
+        where + "/contact/pairs/<classA>-<classB>", names::pairContact()
+    };
+    const entryHome walls{where + "/contact/walls/<class>", names::wallContact()};
+    const auto checkOwn = [&]
+    (
+        const word& name,
+        const entryHome& own,
+        const entryHome& other
+    )
+    {
+        const dictionary* d = contactDict.findDict(name, keyType::LITERAL);
+        for (const entry& e : d ? *d : dictionary::null)
+        {
+            if (e.isDict())
+            {
+                checkKnownEntries
+                (
+                    e.dict(), own.entries,
+                    where + "/contact/" + name + "/" + e.keyword(),
+                    wordHashSet(), string(), {other}
+                );
+            }
+        }
+    };
+    checkOwn("pairs", pairs, walls);
+    checkOwn("walls", walls, pairs);
     checkKnownEntries
     (
         dict_.subOrEmptyDict("initialBed"), names::initialBed(),

@@ -13,55 +13,6 @@ License
 #include "positiveEntry.H"
 #include "mathematicalConstants.H"
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-using namespace Foam;
-
-//- Warning naming the Hertz-Mindlin law's entries given to the linear law,
-//  which reads none of them: said, not ignored silently
-void noteHertzEntries
-(
-    const fileName& file,
-    const dictionary& classes,
-    const dictionary& contact
-)
-{
-    std::string unused;
-    const auto add = [&unused](const std::string& entry)
-    {
-        unused += (unused.empty() ? "" : ", ") + entry;
-    };
-    for (const char* key : {"wallYoungsModulus", "wallPoissonRatio", "impactSpeed"})
-    {
-        if (contact.found(key, keyType::LITERAL)) add("contact/" + word(key));
-    }
-    for (const word& name : classes.sortedToc())
-    {
-        const dictionary* c = classes.findDict(name);
-        for (const char* key : {"youngsModulus", "poissonRatio"})
-        {
-            if (c && c->found(key, keyType::LITERAL))
-            {
-                add("classes/" + name + "/" + word(key));
-            }
-        }
-    }
-    if (!unused.empty())
-    {
-        WarningInFunction
-            << file << ": " << unused.c_str()
-            << " not used: the contactLaw is linear (kn, kt and restitution"
-            << " set the contact); select contactLaw HertzMindlin for them,"
-            << " or remove the entries" << endl;
-    }
-}
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::particleEngine::particleEngine
@@ -111,48 +62,7 @@ dem::Settings Foam::particleEngine::settings
         }
     }
 
-    const dictionary& contact = dict_.subOrEmptyDict("contact");
-    dem::ContactSettings& cs = s.contact;
-    const word law =
-        contact.lookupOrDefault<word>("contactLaw", dem::contactLawName(cs.law));
-    try
-    {
-        cs.law = dem::contactLawFromName(law);
-    }
-    catch (const dem::Error&)
-    {
-        FatalIOErrorInFunction(contact)
-            << "Entry 'contactLaw' = " << law << " in " << contact.name()
-            << " is not allowed; allowed: linear (the paper's, default) or"
-            << " HertzMindlin (docs/theory/dem.md, \"The Hertz-Mindlin law\")"
-            << exit(FatalIOError);
-    }
-    if (cs.law == dem::ContactLawType::linear)
-    {
-        noteHertzEntries(dict_.name(), classes, contact);
-    }
-    cs.wallYoungsModulus =
-        contact.lookupOrDefault<scalar>("wallYoungsModulus", cs.wallYoungsModulus);
-    cs.wallPoissonRatio =
-        contact.lookupOrDefault<scalar>("wallPoissonRatio", cs.wallPoissonRatio);
-    cs.impactSpeed = contact.lookupOrDefault<scalar>("impactSpeed", cs.impactSpeed);
-    cs.kn = contact.lookupOrDefault<scalar>("kn", cs.kn);
-    cs.kt = contact.lookupOrDefault<scalar>("kt", cs.kt);
-    cs.restitution = contact.lookupOrDefault<scalar>("restitution", cs.restitution);
-    cs.restitutionWall =
-        contact.lookupOrDefault<scalar>("restitutionWall", cs.restitutionWall);
-    cs.frictionParticle =
-        contact.lookupOrDefault<scalar>("frictionParticle", cs.frictionParticle);
-    cs.frictionWall = contact.lookupOrDefault<scalar>("frictionWall", cs.frictionWall);
-    cs.tangentialDampingRatio =
-        contact.lookupOrDefault<scalar>
-        (
-            "tangentialDampingRatio", cs.tangentialDampingRatio
-        );
-    cs.rollingFriction =
-        contact.lookupOrDefault<scalar>("rollingFriction", cs.rollingFriction);
-    cs.rollingFrictionWall =
-        contact.lookupOrDefault<scalar>("rollingFrictionWall", cs.rollingFrictionWall);
+    s.contact = contactSettings();
 
     s.box = dem::Box{grid_.xMin(), grid_.xMax(), grid_.yMin(), grid_.yMax()};
     s.gravity[0] = g.x();

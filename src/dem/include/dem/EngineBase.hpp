@@ -36,6 +36,12 @@ namespace dem {
 /// Checks every setting, throwing dem::Error naming the first bad one.
 void validateSettings(const Settings& settings);
 
+/// The names of a pair of classes' and of a class-wall contact's own coefficients in
+/// messages: "contact pair 'small-large'" (in the order of ContactSettings::pairs if given
+/// there), "contact wall 'large'".
+std::string pairName(const Settings& settings, int a, int b);
+std::string wallName(const Settings& settings, int a);
+
 /// The part of validateSettings that checks dt against the step bounds (timeStepBound,
 /// dashpotTimeStep), for settings otherwise valid.
 void checkTimeStep(const Settings& settings);

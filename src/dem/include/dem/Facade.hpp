@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,24 @@ std::string contactLawName(ContactLawType law);
 /// The law of that name; dem::Error naming the allowed names otherwise.
 ContactLawType contactLawFromName(const std::string& name);
 
+/// The coefficients of one pair of classes that replace the global ones of ContactSettings
+/// (those not given keep them): LIGGGHTS' per-type-pair coefficients.
+struct PairContactSettings {
+    int classA = 0;                            ///< index into Settings::classes
+    int classB = 0;                            ///< the other class (either order; may be classA)
+    std::optional<double> restitution;         ///< in (0, 1]
+    std::optional<double> frictionParticle;    ///< sliding friction, >= 0
+    std::optional<double> rollingFriction;     ///< rolling resistance mu_r, >= 0
+};
+
+/// The coefficients of one class against the walls that replace the global ones.
+struct WallContactSettings {
+    int classIndex = 0;                        ///< index into Settings::classes
+    std::optional<double> restitutionWall;     ///< in (0, 1]
+    std::optional<double> frictionWall;        ///< >= 0
+    std::optional<double> rollingFrictionWall; ///< >= 0
+};
+
 /// Contact coefficients (docs/theory/paper-model.md, "Particles"; docs/model.md).
 struct ContactSettings {
     ContactLawType law = ContactLawType::linear;
@@ -53,7 +72,23 @@ struct ContactSettings {
     /// shortens as v^-1/5: the step bounds take the contact time at this speed, or at the
     /// bed's own speed scale where that is larger (hertzSpeed).
     double impactSpeed = 1.0;
+    /// Per pair of classes and per class on the walls, each at most once: the coefficients
+    /// that replace the global ones above (docs/theory/dem.md, "Coefficients per pair").
+    std::vector<PairContactSettings> pairs;
+    std::vector<WallContactSettings> walls;
 };
+
+/// The coefficients one kind of contact runs with: its own where given, else the global ones.
+struct ContactCoefficients {
+    double restitution;       ///< (0, 1]
+    double friction;          ///< sliding friction
+    double rollingFriction;   ///< rolling resistance mu_r
+};
+
+/// Those of a pair of classes a and b (the same for b and a).
+ContactCoefficients pairCoefficients(const ContactSettings& contact, int a, int b);
+/// Those of class a against the walls.
+ContactCoefficients wallCoefficients(const ContactSettings& contact, int a);
 
 /// The domain: four plane walls x = xMin, x = xMax, y = yMin, y = yMax (m).
 struct Box {
@@ -130,7 +165,7 @@ double hertzSpeed(const Settings& settings);
 /// overlap of an impact at hertzSpeed; `cls` the lighter class of that contact.
 double timeStepBound(const Settings& settings, int* smallestClass = nullptr);
 
-/// Contact duration t_c for a pair of the lightest class, with the particle restitution, s:
+/// Contact duration t_c for a pair of the lightest class, with that pair's restitution, s:
 /// under the linear law the shortest contact (a wall's has twice the mass), until the
 /// clamped force vanishes. HertzMindlin: the shortest of Hertz's elastic contact times at
 /// hertzSpeed over the pairs of classes and the walls.

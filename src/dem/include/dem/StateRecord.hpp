@@ -22,15 +22,19 @@ struct Difference {
 /// The settings a trajectory depends on, flattened as the state file stores them: number of
 /// classes, diameter and density of each, contact, box, gravity, dt, the contact law (0
 /// linear, 1 HertzMindlin), tangential damping ratio, rolling friction, the walls' and each
-/// class's Young's modulus and Poisson's ratio, and the neighbour skin last (nThreads and
-/// impactSpeed, which sets the printed step bounds only, do not count).
+/// class's Young's modulus and Poisson's ratio, then, if some pair's or class-wall contact's
+/// own coefficient differs from its global entry, the coefficients of every pair of classes
+/// a <= b and of every class on the walls (restitution, friction, rolling friction each), and
+/// the neighbour skin last (nThreads and impactSpeed, which sets the printed step bounds
+/// only, do not count).
 std::vector<double> settingsKey(const Settings& s, double skin);
 
 /// The entries of two settings keys that differ, named after `s` (the reader's settings),
 /// the skin left out (a state continues with another skin), the moduli too when both laws
-/// are linear and kn, kt when both are HertzMindlin (neither law reads them). Keys of
-/// another number of classes give that one
-/// difference.
+/// are linear and kn, kt when both are HertzMindlin (neither law reads them). A key without
+/// the own coefficients stands for contacts that all take the global entries; a contact's
+/// coefficient is named where it differs and one side has its own. Keys of another number
+/// of classes give that one difference.
 std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
                                             const std::vector<double>& here, const Settings& s);
 
