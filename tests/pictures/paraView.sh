@@ -45,10 +45,13 @@ bed = slice(0, bedWidth)
 # the bed's box (rows and columns holding particles)
 rows = np.where((red | blue)[:, bed].any(axis=1))[0]
 cols = np.where((red | blue)[:, bed].any(axis=0))[0]
+# the packed bed's rows (a fifth of the row or more in particles): a particle
+# still falling after the packing is framed, but it is no bed
+dense = np.where((red | blue)[:, bed].mean(axis=1) > 0.2)[0]
 inBed = np.zeros_like(grey)
-inBed[rows.min():rows.max() + 1, cols.min():cols.max() + 1] = True
+inBed[dense.min():dense.max() + 1, cols.min():cols.max() + 1] = True
 above = np.zeros_like(grey)
-above[:max(rows.min() - 20, 1), cols.min():cols.max() + 1] = True
+above[:max(dense.min() - 20, 1), cols.min():cols.max() + 1] = True
 # the voidage drawn grey from black (0.35) to white (1): between the discs
 # the bed's voidage (below 0.74 anywhere at 0.02 s) is darker than 0.6; the
 # freeboard's (1) is white
