@@ -42,8 +42,7 @@ template <class Law> void System::limitRollingTorques()
                 const ContactLaw& law = wallLaws_[p_.classIndex[i]];
                 const PairGeometry g = wallGeometry(p_, i, w, overlap);
                 const double fn = Law::at(overlap, g.vRel.dot(g.nHat), law).fn;
-                const double torque = std::abs(rollingTorque<2>(g, fn, law));
-                share[i] += rollingCoefficient(torque, std::abs(g.omegaRel), law) * dt * p_.invInertia[i];
+                share[i] += rollingResistance(g, fn, law).coefficient * dt * p_.invInertia[i];
             }
         }
         rollingScales(share, static_cast<std::size_t>(first), static_cast<std::size_t>(last));
@@ -91,9 +90,7 @@ template <class Law> void SlabSystem::limitRollingTorques()
                 const ContactLaw& law = wallLaws_[p.classIndex[i]];
                 const PairGeometry3 c = wallGeometry(p, i, wall, overlap);
                 const double fn = Law::at(overlap, c.vRel.dot(c.nHat), law).fn;
-                const Vec3 rolling = c.omegaRel - c.omegaRel.dot(c.nHat) * c.nHat;
-                const double torque = rollingTorque<3>(c, fn, law).norm();
-                share[i] += rollingCoefficient(torque, rolling.norm(), law) * dt * p.invInertia[i];
+                share[i] += rollingResistance(c, fn, law).coefficient * dt * p.invInertia[i];
             }
         }
         rollingScales(share, static_cast<std::size_t>(first), static_cast<std::size_t>(last));

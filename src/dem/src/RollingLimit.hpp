@@ -19,13 +19,6 @@
 
 namespace dem {
 
-/// c = |M|/|w_r| of a rolling torque of norm torque at relative rolling speed rolling; at
-/// rest the clamp's slope, which a torque of any speed is at most.
-inline double rollingCoefficient(double torque, double rolling, const ContactLaw& law)
-{
-    return rolling > 0.0 ? torque / rolling : law.rollingTorquePerSpin;
-}
-
 /// D_i -> s_i = min(1, 1/(2 D_i)) for particles [first, last) of share.
 inline void rollingScales(double* share, std::size_t first, std::size_t last)
 {

@@ -93,10 +93,8 @@ void SlabSystem::sumPairForces(double historyDt)
         a.tx[j] += nxF.x(); a.ty[j] += nxF.y(); a.tz[j] += nxF.z();
         // Added by limitRollingTorques, scaled, once every contact's share is known
         pairRolling_[k] = f.rollingTorque;
-        const Vec3 rolling = g.omegaRel - g.omegaRel.dot(g.nHat) * g.nHat;
-        const double c = rollingCoefficient(f.rollingTorque.norm(), rolling.norm(), laws[law[k]]);
-        rollingScale_[i] += c * settings_.dt * p.invInertia[i];
-        rollingScale_[j] += c * settings_.dt * p.invInertia[j];
+        rollingScale_[i] += f.rollingCoefficient * settings_.dt * p.invInertia[i];
+        rollingScale_[j] += f.rollingCoefficient * settings_.dt * p.invInertia[j];
         ++touching;
         maxOverlap = std::max(maxOverlap, g.overlap);
     };

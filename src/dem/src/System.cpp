@@ -145,10 +145,8 @@ void System::sumPairForces(double historyDt)
         if constexpr (Rolling) {
             // Added by limitRollingTorques, scaled, once every contact's share is known
             pairRolling[k] = f.rollingTorque;
-            const double c = rollingCoefficient(std::abs(f.rollingTorque), std::abs(g.omegaRel),
-                                                laws[law[k]]);
-            share[i] += c * dt * invInertia[i];
-            share[j] += c * dt * invInertia[j];
+            share[i] += f.rollingCoefficient * dt * invInertia[i];
+            share[j] += f.rollingCoefficient * dt * invInertia[j];
         }
         ++touching;
         maxOverlap = std::max(maxOverlap, g.overlap);

@@ -52,6 +52,7 @@ template <int Dim> struct PairForceT {
     Rotational ft;           ///< tangential force on i (2D: along tHat), N
     Rotational xiT;          ///< updated tangential displacement, m
     Rotational rollingTorque;   ///< rolling resistance on i (j receives minus it), N m; with it only
+    double rollingCoefficient;  ///< its |M|/|w_r| (RollingResistanceT), N m s; with it only
 };
 
 using PairGeometry = PairGeometryT<2>;
@@ -133,23 +134,36 @@ struct HertzMindlin {
     }
 };
 
+/// A rolling torque and its coefficient c = |M|/|w_r|, the torque per unit relative rolling
+/// speed (at rest the clamp's slope, which a torque of any speed is at most): the share of the
+/// rolling it takes in a step, which the engines' limit sums per particle (RollingLimit.hpp).
+template <int Dim> struct RollingResistanceT {
+    typename ContactTypes<Dim>::Rotational torque;   ///< on i (j receives minus it), N m
+    double coefficient;                               ///< N m s
+};
+
 /// Constant-torque rolling resistance (Ai et al. 2011, type A; docs/theory/dem.md, "Rolling
 /// resistance"): a torque of magnitude mu_r R_r Fn against the relative rolling w_r, clamped
 /// to |w_r| I_eff/(n dt) so that it stops the rolling without reversing it. In 3D w_r is the
 /// part of w_i - w_j in the tangent plane (the twist about nHat is not rolling).
 template <int Dim>
-[[gnu::always_inline]] inline typename ContactTypes<Dim>::Rotational
-rollingTorque(const PairGeometryT<Dim>& g, double fn, const ContactLaw& law)
+[[gnu::always_inline]] inline RollingResistanceT<Dim>
+rollingResistance(const PairGeometryT<Dim>& g, double fn, const ContactLaw& law)
 {
     const double limit = law.rollingTorquePerForce * fn;
+    auto coefficient = [&](double m, double w) {
+        return w > 0.0 ? m / w : law.rollingTorquePerSpin;
+    };
     if constexpr (Dim == 2) {
-        const double m = std::min(limit, law.rollingTorquePerSpin * std::abs(g.omegaRel));
-        return -std::copysign(m, g.omegaRel);
+        const double w = std::abs(g.omegaRel);
+        const double m = std::min(limit, law.rollingTorquePerSpin * w);
+        return {-std::copysign(m, g.omegaRel), coefficient(m, w)};
     } else {
         const Eigen::Vector3d rolling = g.omegaRel - g.omegaRel.dot(g.nHat) * g.nHat;
         const double w = rolling.norm();
         const double m = std::min(limit, law.rollingTorquePerSpin * w);
-        return w > 0.0 ? Eigen::Vector3d(-(m / w) * rolling) : Eigen::Vector3d::Zero();
+        return {w > 0.0 ? Eigen::Vector3d(-(m / w) * rolling) : Eigen::Vector3d::Zero(),
+                coefficient(m, w)};
     }
 }
 
@@ -205,7 +219,9 @@ template <int Dim, class Law = LinearSpringDashpot, bool Rolling = false>
         out.ft = ft;
         out.xiT = xiT;
         if constexpr (Rolling) {
-            out.rollingTorque = rollingTorque(g, fn, law);
+            const RollingResistanceT<Dim> rolling = rollingResistance(g, fn, law);
+            out.rollingTorque = rolling.torque;
+            out.rollingCoefficient = rolling.coefficient;
             out.torqueI += out.rollingTorque;
             out.torqueJ -= out.rollingTorque;
         }
@@ -236,7 +252,9 @@ template <int Dim, class Law = LinearSpringDashpot, bool Rolling = false>
         out.ft = ft;
         out.xiT = xi;
         if constexpr (Rolling) {
-            out.rollingTorque = rollingTorque(g, fn, law);
+            const RollingResistanceT<Dim> rolling = rollingResistance(g, fn, law);
+            out.rollingTorque = rolling.torque;
+            out.rollingCoefficient = rolling.coefficient;
             out.torqueI += out.rollingTorque;
             out.torqueJ -= out.rollingTorque;
         }
