@@ -7,7 +7,6 @@
 #include "dem/SlabSystem.hpp"
 
 #include "PairGroups.hpp"
-#include "RollingLimit.hpp"
 #include "StreamingLoops.hpp"
 
 #include <algorithm>

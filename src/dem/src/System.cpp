@@ -6,7 +6,6 @@
 #include "dem/System.hpp"
 
 #include "PairGroups.hpp"
-#include "RollingLimit.hpp"
 #include "WallGeometry.hpp"
 #include "StreamingLoops.hpp"
 

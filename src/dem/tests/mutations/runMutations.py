@@ -34,21 +34,39 @@ SLOW = ["SettledBed.PaperBedSettlesDenseAndAtRest", "SlabFacade.SaveAndLoadConti
 ENVIRONMENT = dict(os.environ, DPMFOAM2D_REQUIRE_REFERENCE="1")
 
 
-# A mutation of a header's inline kernels changes the code of the sources that call them
-# only: those are rebuilt (the header's time stamp kept), not every source that includes it
-# for its types, whose objects the mutation leaves as they are.
-KERNEL_CALLS = re.compile(r"\b(contactForce|rollingTorque|normalForce|elasticEnergy)\s*[<(]")
+# A mutation of the contact kernel's inline functions changes the code of the sources that
+# call them only: those are rebuilt (the header's time stamp kept), not every source that
+# includes it for its types, whose objects the mutation leaves as they are. Another header's
+# mutation rebuilds the sources that include it, directly or through other headers.
+KERNEL_HEADER = "ContactKernel.hpp"
+KERNEL_CALLS = re.compile(r"\b(contactForce|rollingResistance|normalForce|elasticEnergy)\s*[<(]")
 
 
-def kernel_users(source):
-    """The .cpp files of the scratch copy that call the contact kernel's functions."""
-    users = []
+def sources(source):
+    """Every .cpp and .hpp file of the scratch copy with its text."""
+    found = {}
     for folder, _, files in os.walk(source):
         for name in files:
-            path = os.path.join(folder, name)
-            if name.endswith(".cpp") and KERNEL_CALLS.search(open(path).read()):
-                users.append(path)
-    return users
+            if name.endswith((".cpp", ".hpp")):
+                path = os.path.join(folder, name)
+                found[path] = open(path).read()
+    return found
+
+
+def header_users(source, header):
+    """The .cpp files to rebuild after a mutation of `header`."""
+    texts = sources(source)
+    if os.path.basename(header) == KERNEL_HEADER:
+        return [p for p, t in texts.items() if p.endswith(".cpp") and KERNEL_CALLS.search(t)]
+    including, names = set(), {os.path.basename(header)}
+    while True:
+        more = {p for p, t in texts.items() if p not in including
+                and any(re.search(r'#include\s+"(?:[^"]*/)?' + re.escape(n) + '"', t) for n in names)}
+        if not more:
+            break
+        including |= more
+        names |= {os.path.basename(p) for p in more if p.endswith(".hpp")}
+    return sorted(p for p in including if p.endswith(".cpp"))
 
 
 def touch(paths):
@@ -171,12 +189,12 @@ def main():
         sys.exit(f"the unmutated copy does not build (see {log})")
 
     survived, unbuilt = [], []
-    users = kernel_users(source)
     for k, m in enumerate(mutations, 1):
         path = os.path.join(source, m["file"])
         original = open(path).read()
         stamp = os.stat(path)
         header = path.endswith(".hpp")
+        users = header_users(source, path) if header else []
         with open(path, "w") as f:
             f.write(original.replace(m["from"], m["to"]))
         if header:
