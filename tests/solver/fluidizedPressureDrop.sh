@@ -24,8 +24,9 @@
 # Every drag model must pass it (the weight does not depend on the drag).
 # In the slab mode (slab3D <depth>: 3D spheres between walls <depth> apart,
 # the mesh that thick) the same balance with D the slab's depth, and the
-# spheres' volume mapped in full.
-#   fluidizedPressureDrop.sh <workDir> <pressure in bar> [dragModel] [slab3D <depth>]
+# spheres' volume mapped in full; with the gas resolved in depth
+# (spheres3D:<nz> <depth>, nz cells between no-slip walls) the same.
+#   fluidizedPressureDrop.sh <workDir> <pressure in bar> [dragModel] [slab3D <depth> | spheres3D:<nz> <depth>]
 # The formulation (A or B, default B) from the environment: FORMULATION=A.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"

@@ -30,7 +30,7 @@ def patch_mean(path, patch):
     """Mean of a scalar field's nonuniform value on a patch (ASCII field)."""
     import re
     text = open(path).read()
-    m = re.search(patch + r"\s*\{[^}]*?value\s+nonuniform List<scalar>\s*\d+\(([^)]*)\)", text)
+    m = re.search(patch + r"\s*\{[^}]*?value\s+nonuniform List<scalar>\s*\d+\s*\(([^)]*)\)", text)
     if m is None:
         raise ValueError(f"{path}: no nonuniform value on patch {patch}")
     return np.array(m.group(1).split(), dtype=float).mean()

@@ -12,7 +12,7 @@
 # (-eps_g grad p + rho eps_g g = -eps_g grad p_rgh): the same state.
 # In the slab mode (voidageModel slab3D, the mesh as thick as the slab) the
 # same holds with the spheres' volume fraction as the voidage.
-#   hydrostatics.sh <workDir> [A|B] [discs2D | slab3D <depth>]
+#   hydrostatics.sh <workDir> [A|B] [discs2D | slab3D <depth> | spheres3D:<nz> <depth>]
 #                                      (default B discs2D)
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
@@ -25,10 +25,9 @@ setEntry constant/particleProperties frozen true
 setFormulation "${2:-}"
 setMomentum
 setVoidageModel "${3:-}"
-if [ "$voidageModel" = slab3D ]
+if [ "$voidageModel" != discs2D ]
 then
-    setEntry system/bedGeometry depth "${4:?slab3D needs the slab depth}"
-    blockMesh >log.blockMesh 2>&1 || fail "blockMesh"
+    setDepth "${4:?$voidageModel needs the slab depth}"
 fi
 setEntry system/controlDict endTime 0.1
 setEntry system/controlDict writeInterval 0.1

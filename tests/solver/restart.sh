@@ -6,7 +6,7 @@
 # every 200, at the restart step too). The particles (positions, velocities, spins) and the gas
 # fields must be identical bit for bit (gas written in binary).
 # In the slab mode the spheres' z, vz and spin vector too.
-#   restart.sh <workDir> [dragModel] [slab3D <depth>]
+#   restart.sh <workDir> [dragModel] [slab3D <depth> | spheres3D:<nz> <depth>]
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 model="${2:-ErgunWenYu}"     # drag model (Beetstra: the cell mixture too)

@@ -6,7 +6,7 @@
 # DEM and the coupling loops sum in an order that does not depend on the
 # thread count. Correct on a busy machine too (only slower).
 # In the slab mode the spheres' z, vz and spin vector too.
-#   threads.sh <workDir> [dragModel] [slab3D <depth>]
+#   threads.sh <workDir> [dragModel] [slab3D <depth> | spheres3D:<nz> <depth>]
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 model="${2:-ErgunWenYu}"     # drag model (Beetstra: the cell mixture too)

@@ -59,7 +59,7 @@ label launchedProcesses()
 
 const Foam::wordList& Foam::caseChecks::bedGeometryEntries()
 {
-    static const wordList names{"width", "height", "depth", "nx", "ny"};
+    static const wordList names{"width", "height", "depth", "nx", "ny", "nz"};
     return names;
 }
 
@@ -102,7 +102,7 @@ void Foam::caseChecks::gravity(const vector& g)
 void Foam::caseChecks::bedGeometry
 (
     const fvMesh& mesh,
-    const cartesianGrid2D& grid
+    const cartesianGrid& grid
 )
 {
     const fileName systemDir(mesh.time().path()/mesh.time().system());
@@ -134,7 +134,7 @@ void Foam::caseChecks::bedGeometry
     const scalar meshValues[] =
     {
         grid.xMax() - grid.xMin(), grid.yMax() - grid.yMin(), grid.depth(),
-        scalar(grid.nx()), scalar(grid.ny())
+        scalar(grid.nx()), scalar(grid.ny()), scalar(grid.nz())
     };
     OStringStream differences;
     forAll(bedGeometryEntries(), k)

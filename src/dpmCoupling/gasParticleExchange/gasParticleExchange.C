@@ -65,7 +65,7 @@ IOobject fieldIO(const word& name, const fvMesh& mesh, const bool write)
 Foam::gasParticleExchange::gasParticleExchange
 (
     const fvMesh& mesh,
-    const cartesianGrid2D& grid,
+    const cartesianGrid& grid,
     particleEngine& engine,
     const dragModel& drag,
     const couplingFormulation& formulation,
@@ -89,6 +89,7 @@ Foam::gasParticleExchange::gasParticleExchange
     g_(g),
     frozen_(frozen),
     slab_(model.slab()),
+    gasInDepth_(grid.resolvedInDepth()),
     voidageMin_(voidageMin),
     nThreads_(1),
     reactionReady_(false),
@@ -154,6 +155,7 @@ void Foam::gasParticleExchange::interpolateGas
 
     const double* x = dem.x();
     const double* y = dem.y();
+    const double* z = gasInDepth_ ? dem.z() : nullptr;
     const double* vx = dem.vx();
     const double* vy = dem.vy();
     const double* d = dem.diameter();
@@ -173,7 +175,7 @@ void Foam::gasParticleExchange::interpolateGas
     {
         scalar e;
         vector u;
-        grid_.interpolate(x[i], y[i], eps, Uc, e, u);
+        grid_.interpolate(x[i], y[i], z ? z[i] : 0, eps, Uc, e, u);
         voidageP_[i] = e;
         gasVelocityP_[i] = u;
         diameterP_[i] = d[i];
@@ -220,17 +222,22 @@ void Foam::gasParticleExchange::slabGasInputs(scalarField& slip)
     const double* vx = dem.vx();
     const double* vy = dem.vy();
     const double* vz = dem.vz();
+    const double* d = dem.diameter();
     double* uZ = dem.gasVelocityZ();
     double* fZ = dem.extraForceZ();
+    const scalar pi = constant::mathematical::pi;
     for (label i = 0; i < n; ++i)
     {
-        uZ[i] = 0;
-        fZ[i] = 0;
-        if (frozen_) continue;      // slip of particles at rest, as set
+        // A slab's gas has no z velocity; a gas resolved in depth has
         const vector& u = gasVelocityP_[i];
+        const scalar uz = gasInDepth_ ? u.z() : 0;
+        uZ[i] = uz;
+        fZ[i] = gasInDepth_ ? -rhoGas_*pi*d[i]*d[i]*d[i]/6*g_.z() : 0;
+        if (frozen_) continue;      // slip of particles at rest, as set
         const scalar sx = u.x() - vx[i];
         const scalar sy = u.y() - vy[i];
-        slip[i] = std::sqrt(sx*sx + sy*sy + vz[i]*vz[i]);
+        const scalar sz = uz - vz[i];
+        slip[i] = std::sqrt(sx*sx + sy*sy + sz*sz);
     }
 }
 
@@ -246,7 +253,9 @@ void Foam::gasParticleExchange::holdFrozen()
         (
             K_[i]*dem.gasVelocityX()[i] + dem.extraForceX()[i],
             K_[i]*dem.gasVelocityY()[i] + dem.extraForceY()[i],
-            0
+            gasInDepth_
+          ? K_[i]*dem.gasVelocityZ()[i] + dem.extraForceZ()[i]
+          : 0
         );
     }
 }
@@ -267,10 +276,11 @@ void Foam::gasParticleExchange::exchangeToGas()
     const labelList& counts = particleModel_.voidage().counts();
     const labelList& cells = particleModel_.voidage().cells();
     const scalarList& fractions = particleModel_.voidage().fractions();
+    const label S = particleModel_.voidage().stride();
     for (label i = 0; i < n; ++i)
     {
         const vector& F = exchanged[i];
-        for (label k = 4*i; k < 4*i + counts[i]; ++k)
+        for (label k = S*i; k < S*i + counts[i]; ++k)
         {
             const label c = cells[k];
             const scalar f = fractions[k]/Vc;
@@ -295,7 +305,8 @@ void Foam::gasParticleExchange::updateOverlaps()
     const dem::Simulation& dem = engine_.dem();
     particleModel_.voidage().updateOverlaps
     (
-        engine_.size(), dem.x(), dem.y(), dem.diameter(),
+        engine_.size(), dem.x(), dem.y(),
+        particleModel_.slab() ? dem.z() : nullptr, dem.diameter(),
         nThreads_
     );
 }
@@ -322,7 +333,10 @@ void Foam::gasParticleExchange::updateVoidage()
 
 void Foam::gasParticleExchange::exchangedForces(vectorField& F) const
 {
-    formulation_.exchangedForces(engine_.dem(), K_, frozen_, frozenForce_, F);
+    formulation_.exchangedForces
+    (
+        engine_.dem(), K_, frozen_, frozenForce_, gasInDepth_, F
+    );
 }
 
 

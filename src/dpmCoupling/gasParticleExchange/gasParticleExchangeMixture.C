@@ -40,11 +40,12 @@ void Foam::gasParticleExchange::updateMixture()
     const labelList& counts = particleModel_.voidage().counts();
     const labelList& cells = particleModel_.voidage().cells();
     const scalarList& fractions = particleModel_.voidage().fractions();
+    const label S = particleModel_.voidage().stride();
     for (label i = 0; i < n; ++i)
     {
         solidsMixture::addParticle
         (
-            d[i], cls[i], counts[i], &cells[4*i], &fractions[4*i], Vc,
+            d[i], cls[i], counts[i], &cells[S*i], &fractions[S*i], Vc,
             classFraction_, fractionByDiameter_
         );
     }
@@ -57,6 +58,7 @@ void Foam::gasParticleExchange::interpolateMixture()
     const label n = engine_.size();
     const double* x = dem.x();
     const double* y = dem.y();
+    const double* z = gasInDepth_ ? dem.z() : nullptr;
     const double* d = dem.diameter();
     const scalarField& phiP = particleFraction_.primitiveField();
 
@@ -65,12 +67,13 @@ void Foam::gasParticleExchange::interpolateMixture()
     #pragma omp parallel for num_threads(nThreads_) schedule(static)
     for (label i = 0; i < n; ++i)
     {
-        label cells[4];
-        scalar w[4];
-        grid_.interpolationStencil(x[i], y[i], cells, w);
+        label cells[8];
+        scalar w[8];
+        const label count =
+            grid_.interpolationStencil(x[i], y[i], z ? z[i] : 0, cells, w);
         dMean[i] = solidsMixture::sauterDiameter
         (
-            cells, w, phiP, fractionByDiameter_, d[i]
+            count, cells, w, phiP, fractionByDiameter_, d[i]
         );
     }
 }

@@ -18,7 +18,7 @@ License
 Foam::particleEngine::particleEngine
 (
     const IOdictionary& dict,
-    const cartesianGrid2D& grid,
+    const cartesianGrid& grid,
     const wordList& classNames
 )
 :
@@ -51,14 +51,20 @@ dem::Settings Foam::particleEngine::settings
                 c.lookupOrDefault<scalar>("poissonRatio", 0)
             }
         );
-        if (s.classes.back().diameter > min(grid_.dx(), grid_.dy()))
+        if (s.classes.back().diameter > grid_.minCellSize())
         {
             FatalIOErrorInFunction(c)
                 << "Entry 'diameter' = " << s.classes.back().diameter
                 << " of class " << name << " in " << dict_.name()
                 << " is larger than the gas cell (" << grid_.dx() << " x "
-                << grid_.dy() << " m); allowed range (0, "
-                << min(grid_.dx(), grid_.dy()) << "]" << exit(FatalIOError);
+                << grid_.dy();
+            if (grid_.resolvedInDepth())
+            {
+                FatalIOError<< " x " << grid_.dz();
+            }
+            FatalIOError
+                << " m); allowed range (0, " << grid_.minCellSize() << "]"
+                << exit(FatalIOError);
         }
     }
 

@@ -39,7 +39,7 @@ Foam::particleModel::engine Foam::particleModel::engineOf
 Foam::particleModel::particleModel
 (
     const dictionary& dict,
-    const cartesianGrid2D& grid,
+    const cartesianGrid& grid,
     const scalar voidageMin
 )
 :
@@ -53,7 +53,7 @@ Foam::particleModel::particleModel
 void Foam::particleModel::selectEngine
 (
     dem::Settings& s,
-    const cartesianGrid2D& grid
+    const cartesianGrid& grid
 ) const
 {
     if (slab())

@@ -104,7 +104,7 @@ void Foam::functionObjects::laceyIndex::calculate(const dpmCloud& cloud)
     mixing::LaceySettings settings(settings_);
     if (!settings.useRegion)
     {
-        const cartesianGrid2D& grid = cloud.grid();
+        const cartesianGrid& grid = cloud.grid();
         settings.useRegion = true;
         settings.region = {grid.xMin(), grid.xMax(), grid.yMin(), grid.yMax()};
     }

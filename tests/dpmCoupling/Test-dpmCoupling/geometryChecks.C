@@ -15,7 +15,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "checks.H"
-#include "cartesianGrid2D.H"
+#include "cartesianGrid.H"
 #include "fluidization.H"
 #include "Random.H"
 
@@ -50,7 +50,7 @@ void checkGeometry(const fvMesh& mesh)
 
     // The grid shares each disc out exactly: areas add up to pi r^2
     {
-        const cartesianGrid2D grid(mesh);
+        const cartesianGrid grid(mesh);
         check("grid cells in x", grid.nx(), 20, 0);
         check("grid cells in y", grid.ny(), 120, 0);
         check("grid cell size", grid.dx(), 7.5e-3, 1e-9);

@@ -16,7 +16,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "checks.H"
-#include "cartesianGrid2D.H"
+#include "cartesianGrid.H"
 #include "solidsMixture.H"
 #include "voidageModel.H"
 #include "Random.H"
@@ -32,7 +32,7 @@ void checkVoidage(const fvMesh& mesh)
     // maps it): the Sauter mean diameter of discs laid in the grid with
     // their overlaps
     {
-        const cartesianGrid2D grid(mesh);
+        const cartesianGrid grid(mesh);
         const label nCells = grid.nx()*grid.ny();
         const scalar Vc = grid.cellVolume();
         Random rnd(11);
@@ -59,10 +59,10 @@ void checkVoidage(const fvMesh& mesh)
                 solidsMixture::addParticle(diameters[i], classes[i], count, cells, f, Vc, phiK, byD);
             }
             const scalarField phiP(phiK[0] + phiK[1]);
-            label cells[4];
-            scalar w[4];
-            grid.interpolationStencil(grid.xMin() + grid.dx(), grid.yMin() + grid.dy(), cells, w);
-            return solidsMixture::sauterDiameter(cells, w, phiP, byD, -1);
+            label cells[8];
+            scalar w[8];
+            const label count = grid.interpolationStencil(grid.xMin() + grid.dx(), grid.yMin() + grid.dy(), 0, cells, w);
+            return solidsMixture::sauterDiameter(count, cells, w, phiP, byD, -1);
         };
 
         // Equal sizes in two classes: <d> is the diameter itself, y = 1
@@ -85,17 +85,18 @@ void checkVoidage(const fvMesh& mesh)
         // No solids near the point: the particle's own diameter stands
         {
             const scalarField zero(nCells, Zero);
-            label cells[4];
-            scalar w[4];
-            grid.interpolationStencil(grid.xMin() + 0.05, grid.yMin() + 0.5, cells, w);
-            check("Sauter mean without solids: fallback", solidsMixture::sauterDiameter(cells, w, zero, zero, 1.5e-3), 1.5e-3, 0);
+            label cells[8];
+            scalar w[8];
+            const label count = grid.interpolationStencil(grid.xMin() + 0.05, grid.yMin() + 0.5, 0, cells, w);
+            check("bilinear stencil on a grid one cell thick", count, 4, 0);
+            check("Sauter mean without solids: fallback", solidsMixture::sauterDiameter(count, cells, w, zero, zero, 1.5e-3), 1.5e-3, 0);
         }
     }
 
     // The voidage models (voidageModels/): selection, and the mapped
     // volumes against the particles' own
     {
-        const cartesianGrid2D grid(mesh);
+        const cartesianGrid grid(mesh);
         const label nCells = grid.nx()*grid.ny();
         const scalar Vc = grid.cellVolume();
         const scalar voidageMin = 0.1;
@@ -105,15 +106,17 @@ void checkVoidage(const fvMesh& mesh)
         };
         autoPtr<voidageModel> discs(select(""));
         autoPtr<voidageModel> slab(select("voidageModel slab3D;"));
+        autoPtr<voidageModel> spheres(select("voidageModel spheres3D;"));
         check("default voidage model is discs2D", discs->type() == "discs2D", 1, 0);
         check("voidageModel slab3D selects slab3D", slab->type() == "slab3D", 1, 0);
+        check("voidageModel spheres3D selects spheres3D", spheres->type() == "spheres3D", 1, 0);
 
         // 1e4 random spheres of 1.5 and 2.5 mm anywhere in the bed: the
         // cells' volume fractions sum to the spheres' volume (round-off)
         {
             Random rnd(13);
             const label n = 10000;
-            List<double> x(n), y(n), d(n);
+            List<double> x(n), y(n), z(n), d(n);
             scalar Vp = 0;
             for (label i = 0; i < n; ++i)
             {
@@ -121,12 +124,13 @@ void checkVoidage(const fvMesh& mesh)
                 const scalar r = 0.5*d[i];
                 x[i] = grid.xMin() + r + rnd.sample01<scalar>()*(0.15 - 2*r);
                 y[i] = grid.yMin() + r + rnd.sample01<scalar>()*(0.9 - 2*r);
+                z[i] = 0.5*grid.depth();
                 Vp += pi*pow3(d[i])/6;
             }
             for (const label nThreads : {1, 2})
             {
                 scalarField eps(nCells), phiP(nCells);
-                slab->updateOverlaps(n, x.cdata(), y.cdata(), d.cdata(), nThreads);
+                slab->updateOverlaps(n, x.cdata(), y.cdata(), z.cdata(), d.cdata(), nThreads);
                 slab->updateFields(n, d.cdata(), eps, phiP);
                 const std::string t = " (" + std::to_string(nThreads) + " threads)";
                 check("slab3D: mapped sphere volumes = particles' volume" + t, sum(phiP)*Vc, Vp, 1e-12);
@@ -135,7 +139,14 @@ void checkVoidage(const fvMesh& mesh)
                 forAll(slab->counts(), i) shared += slab->counts()[i] > 1;
                 check("slab3D: some spheres straddle cells" + t, shared > 1000, 1, 0);
 
-                discs->updateOverlaps(n, x.cdata(), y.cdata(), d.cdata(), nThreads);
+                // On a mesh one cell thick, spheres3D's box volumes are the
+                // column volumes: the same shares to round-off
+                scalarField epsSpheres(nCells), phiPSpheres(nCells);
+                spheres->updateOverlaps(n, x.cdata(), y.cdata(), z.cdata(), d.cdata(), nThreads);
+                spheres->updateFields(n, d.cdata(), epsSpheres, phiPSpheres);
+                check("spheres3D one cell thick: phiP of slab3D" + t, 1 + max(mag(phiPSpheres - phiP)), 1, 1e-12);
+
+                discs->updateOverlaps(n, x.cdata(), y.cdata(), nullptr, d.cdata(), nThreads);
                 discs->updateFields(n, d.cdata(), eps, phiP);
                 check("discs2D: mapped sphere volumes = particles' volume" + t, sum(phiP)*Vc, Vp, 1e-12);
             }
@@ -156,14 +167,14 @@ void checkVoidage(const fvMesh& mesh)
             const label c = grid.cellIJ(5, 2);
             scalarField eps(nCells), phiP(nCells);
 
-            slab->updateOverlaps(n, x.cdata(), y.cdata(), d.cdata(), 1);
+            slab->updateOverlaps(n, x.cdata(), y.cdata(), nullptr, d.cdata(), 1);
             slab->updateFields(n, d.cdata(), eps, phiP);
             const scalar phiSlab = pi*dp/(6*grid.depth());
             check("slab3D lattice: phiP = pi d/(6 depth)", phiP[c], phiSlab, 1e-12);
             check("slab3D lattice: voidage = 1 - pi d/(6 depth)", eps[c], 1 - phiSlab, 1e-12);
             check("slab3D lattice: empty cell above", eps[grid.cellIJ(5, 4)], 1, 0);
 
-            discs->updateOverlaps(n, x.cdata(), y.cdata(), d.cdata(), 1);
+            discs->updateOverlaps(n, x.cdata(), y.cdata(), nullptr, d.cdata(), 1);
             discs->updateFields(n, d.cdata(), eps, phiP);
             // Hoomans et al. (1996): 1 - 2/sqrt(pi sqrt 3) (1 - eps_2D)^1.5
             check("discs2D lattice: Hoomans of 1 - pi/4", eps[c], 1 - 2/std::sqrt(pi*std::sqrt(3.0))*std::pow(pi/4, 1.5), 1e-12);

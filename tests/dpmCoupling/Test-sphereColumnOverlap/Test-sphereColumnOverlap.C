@@ -29,7 +29,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
-#include "cartesianGrid2D.H"
+#include "cartesianGrid.H"
 #include "forEachSphereOverlap.H"
 #include "columnQuadrature.H"
 #include "absoluteCheck.H"
@@ -49,7 +49,7 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
 
-    const cartesianGrid2D grid(mesh);
+    const cartesianGrid grid(mesh);
     if (args.found("benchmark"))
     {
         sphereColumnBenchmark(grid);

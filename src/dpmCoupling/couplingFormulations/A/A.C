@@ -42,7 +42,7 @@ Foam::string Foam::couplingFormulations::A::description() const
 void Foam::couplingFormulations::A::checkBedDepth
 (
     const IOdictionary& dict,
-    const cartesianGrid2D& grid,
+    const cartesianGrid& grid,
     const scalarList& diameters,
     const bool slab,
     const scalar voidageMin
@@ -75,7 +75,7 @@ void Foam::couplingFormulations::A::addPressureForce
 (
     dem::Simulation& particles,
     scalarField& K,
-    const cartesianGrid2D& grid,
+    const cartesianGrid& grid,
     const volScalarField& p_rgh,
     const volScalarField& particleFraction,
     const scalar voidageMin,
@@ -92,20 +92,24 @@ void Foam::couplingFormulations::A::addPressureForce
     const label n = label(particles.size());
     const double* x = particles.x();
     const double* y = particles.y();
+    const bool inDepth = grid.resolvedInDepth();
+    const double* z = inDepth ? particles.z() : nullptr;
     const double* d = particles.diameter();
     double* Kd = particles.dragCoefficient();
     double* fX = particles.extraForceX();
     double* fY = particles.extraForceY();
+    double* fZ = inDepth ? particles.extraForceZ() : nullptr;
 
     #pragma omp parallel for num_threads(nThreads) schedule(static)
     for (label i = 0; i < n; ++i)
     {
-        label cells[4];
-        scalar w[4];
-        grid.interpolationStencil(x[i], y[i], cells, w);
+        label cells[8];
+        scalar w[8];
+        const label count =
+            grid.interpolationStencil(x[i], y[i], z ? z[i] : 0, cells, w);
         scalar epsG = 0;
         vector gradPi = Zero;
-        for (int k = 0; k < 4; ++k)
+        for (label k = 0; k < count; ++k)
         {
             epsG += w[k]*max(1 - phiP[cells[k]], voidageMin);
             gradPi += w[k]*gp[cells[k]];
@@ -115,6 +119,7 @@ void Foam::couplingFormulations::A::addPressureForce
         Kd[i] = K[i];
         fX[i] -= Vp*gradPi.x();
         fY[i] -= Vp*gradPi.y();
+        if (fZ) fZ[i] -= Vp*gradPi.z();
     }
 }
 
@@ -125,6 +130,7 @@ void Foam::couplingFormulations::A::exchangedForces
     const scalarField& K,
     const bool frozen,
     const vectorField&,
+    const bool withZ,
     vectorField& F
 ) const
 {
@@ -135,11 +141,13 @@ void Foam::couplingFormulations::A::exchangedForces
     {
         const scalar vx = frozen ? 0 : particles.meanVelocityX()[i];
         const scalar vy = frozen ? 0 : particles.meanVelocityY()[i];
+        const scalar vz =
+            (frozen || !withZ) ? 0 : particles.meanVelocityZ()[i];
         F[i] = K[i]*vector
         (
             particles.gasVelocityX()[i] - vx,
             particles.gasVelocityY()[i] - vy,
-            0
+            withZ ? particles.gasVelocityZ()[i] - vz : 0
         );
     }
 }

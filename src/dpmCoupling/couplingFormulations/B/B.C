@@ -42,6 +42,7 @@ void Foam::couplingFormulations::B::exchangedForces
     const scalarField&,
     const bool frozen,
     const vectorField& frozenForce,
+    const bool withZ,
     vectorField& F
 ) const
 {
@@ -54,9 +55,10 @@ void Foam::couplingFormulations::B::exchangedForces
     }
     const double* FX = particles.meanFluidForceX();
     const double* FY = particles.meanFluidForceY();
+    const double* FZ = withZ ? particles.meanFluidForceZ() : nullptr;
     for (label i = 0; i < n; ++i)
     {
-        F[i] = vector(FX[i], FY[i], 0);
+        F[i] = vector(FX[i], FY[i], FZ ? FZ[i] : 0);
     }
 }
 

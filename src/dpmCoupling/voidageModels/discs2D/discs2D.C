@@ -26,12 +26,15 @@ namespace voidageModels
 
 Foam::voidageModels::discs2D::discs2D
 (
-    const cartesianGrid2D& grid,
+    const dictionary& dict,
+    const cartesianGrid& grid,
     const scalar voidageMin
 )
 :
     voidageModel(grid, voidageMin)
-{}
+{
+    requireOneCellThick(dict);
+}
 
 
 Foam::string Foam::voidageModels::discs2D::description() const
@@ -47,6 +50,7 @@ void Foam::voidageModels::discs2D::updateOverlaps
     const label n,
     const double* x,
     const double* y,
+    const double*,
     const double* d,
     const label nThreads
 )
@@ -54,10 +58,10 @@ void Foam::voidageModels::discs2D::updateOverlaps
     // The costly part (segment areas): on the DEM's threads
     storeOverlaps
     (
-        n, x, y, d, nThreads,
-        [this](const scalar xi, const scalar yi, const scalar r, const auto& op)
+        n, d, nThreads,
+        [this, x, y](const label i, const scalar r, const auto& op)
         {
-            grid_.forEachDiscOverlap(xi, yi, r, op);
+            grid_.forEachDiscOverlap(x[i], y[i], r, op);
         },
         [](const scalar r) { return constant::mathematical::pi*r*r; }
     );
@@ -83,7 +87,7 @@ void Foam::voidageModels::discs2D::updateFields
         const scalar r = 0.5*d[i];
         const scalar discArea = constant::mathematical::pi*r*r;
         const scalar VpByVc = discArea*4*r/(3*Vc);
-        for (label k = 4*i; k < 4*i + counts_[i]; ++k)
+        for (label k = stride_*i; k < stride_*i + counts_[i]; ++k)
         {
             const label c = cells_[k];
             porosity2D_[c] -= fractions_[k]*discArea/cellArea;

@@ -27,11 +27,25 @@ namespace voidageModels
 
 Foam::voidageModels::slab3D::slab3D
 (
-    const cartesianGrid2D& grid,
+    const dictionary& dict,
+    const cartesianGrid& grid,
     const scalar voidageMin
 )
 :
     voidageModel(grid, voidageMin)
+{
+    requireOneCellThick(dict);
+}
+
+
+Foam::voidageModels::slab3D::slab3D
+(
+    const cartesianGrid& grid,
+    const scalar voidageMin,
+    const label stride
+)
+:
+    voidageModel(grid, voidageMin, stride)
 {}
 
 
@@ -72,16 +86,17 @@ void Foam::voidageModels::slab3D::updateOverlaps
     const label n,
     const double* x,
     const double* y,
+    const double*,
     const double* d,
     const label nThreads
 )
 {
     storeOverlaps
     (
-        n, x, y, d, nThreads,
-        [this](const scalar xi, const scalar yi, const scalar r, const auto& op)
+        n, d, nThreads,
+        [this, x, y](const label i, const scalar r, const auto& op)
         {
-            forEachSphereOverlap(grid_, xi, yi, r, op);
+            forEachSphereOverlap(grid_, x[i], y[i], r, op);
         },
         [](const scalar r) { return 4*constant::mathematical::pi*r*r*r/3; }
     );
@@ -103,7 +118,7 @@ void Foam::voidageModels::slab3D::updateFields
     {
         const scalar r = 0.5*d[i];
         const scalar VpByVc = 4*constant::mathematical::pi*r*r*r/(3*Vc);
-        for (label k = 4*i; k < 4*i + counts_[i]; ++k)
+        for (label k = stride_*i; k < stride_*i + counts_[i]; ++k)
         {
             phiP[cells_[k]] += VpByVc*fractions_[k];
         }

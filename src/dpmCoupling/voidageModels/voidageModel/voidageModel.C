@@ -20,13 +20,29 @@ namespace Foam
 
 Foam::voidageModel::voidageModel
 (
-    const cartesianGrid2D& grid,
-    const scalar voidageMin
+    const cartesianGrid& grid,
+    const scalar voidageMin,
+    const label stride
 )
 :
     grid_(grid),
+    stride_(stride),
     voidageMin_(voidageMin)
 {}
+
+
+void Foam::voidageModel::requireOneCellThick(const dictionary& dict) const
+{
+    if (grid_.resolvedInDepth())
+    {
+        FatalIOErrorInFunction(dict)
+            << "voidageModel " << type() << " in " << dict.name()
+            << " needs a gas mesh one cell thick in z, but the mesh has "
+            << grid_.nz() << " cells through its depth (system/bedGeometry"
+            << " nz); use nz 1, or voidageModel spheres3D for a gas resolved"
+            << " in depth" << exit(FatalIOError);
+    }
+}
 
 
 // ************************************************************************* //

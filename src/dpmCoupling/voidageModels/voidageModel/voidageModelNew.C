@@ -15,7 +15,7 @@ License
 Foam::autoPtr<Foam::voidageModel> Foam::voidageModel::New
 (
     const dictionary& dict,
-    const cartesianGrid2D& grid,
+    const cartesianGrid& grid,
     const scalar voidageMin
 )
 {
@@ -23,10 +23,11 @@ Foam::autoPtr<Foam::voidageModel> Foam::voidageModel::New
     (
         dict, "voidageModel", gridConstructorTablePtr_->sortedToc(), "discs2D",
         "discs2D (disc-area fraction and Hoomans' 3D voidage, the paper's,"
-        " default) or slab3D (sphere volume in the cell column of a slab one"
-        " cell thick)"
+        " default), slab3D (sphere volume in the cell column of a slab one"
+        " cell thick) or spheres3D (sphere volume in the cells of a gas"
+        " resolved in depth)"
     );
-    return (*gridConstructorTablePtr_)[choice](grid, voidageMin);
+    return (*gridConstructorTablePtr_)[choice](dict, grid, voidageMin);
 }
 
 

@@ -1,0 +1,313 @@
+/*---------------------------------------------------------------------------*\
+    dpmFoam2D: soft-sphere CFD-DEM for gas-solid fluidized beds
+-------------------------------------------------------------------------------
+    SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+    SPDX-License-Identifier: GPL-3.0-or-later
+License
+    This file is part of dpmFoam2D, free software under the GNU General
+    Public License, version 3 or (at your option) any later version;
+    see the file LICENSE.
+-------------------------------------------------------------------------------
+Application
+    Test-gasInDepth
+
+Description
+    Checks of the gas resolved in depth on a mesh of NETL's column (38.1 mm
+    square, 228.6 mm tall, 4 x 24 x 4 cells):
+    - the grid: sizes, and every cell found at its centre;
+    - trilinear interpolation: exact for a linear field, the cell's value
+      at its centre;
+    - a sphere's volume shared out by forEachSphereBoxOverlap: each cell's
+      share against the sphere-box volume of that cell alone
+      (sphereBoxOverlap.H, checked against a quadrature by
+      Test-sphereBoxOverlap), the shares against the whole;
+    - voidageModel spheres3D: the mapped volume against the particles',
+      a lattice of known solid fraction pi/6, the spreading sphere's
+      shares, the same fields on 1 and 2 threads.
+    Ends with the line "N passed, M failed".
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "cartesianGrid.H"
+#include "forEachSphereBoxOverlap.H"
+#include "voidageModel.H"
+#include "Random.H"
+#include "IStringStream.H"
+
+using namespace Foam;
+
+static label nPassed = 0, nFailed = 0;
+
+void check
+(
+    const std::string& what, const scalar value, const scalar expected,
+    const scalar relTol
+)
+{
+    const scalar err = mag(value - expected)/max(mag(expected), VSMALL);
+    const bool ok = err <= relTol;
+    (ok ? nPassed : nFailed)++;
+    Info<< (ok ? "PASS " : "FAIL ") << what.c_str() << ": " << value
+        << " expected " << expected << " (relative error " << err
+        << ", tolerance " << relTol << ")" << endl;
+}
+
+
+void checkGrid(const fvMesh& mesh, const cartesianGrid& grid)
+{
+    check("cells in x", grid.nx(), 4, 0);
+    check("cells in y", grid.ny(), 24, 0);
+    check("cells in z", grid.nz(), 4, 0);
+    check("cell size in z", grid.dz(), 0.0381/4, 1e-9);
+    check("cell volume", grid.cellVolume(), pow3(0.0381/4), 1e-9);
+    label misplaced = 0;
+    forAll(mesh.C(), celli)
+    {
+        const point& c = mesh.C()[celli];
+        misplaced += grid.findCell(c.x(), c.y(), c.z()) != celli;
+    }
+    check("every cell found at its centre", misplaced, 0, 0);
+    check("outside in z: no cell", grid.findCell(0.01, 0.01, 0.039), -1, 0);
+}
+
+
+void checkInterpolation(const fvMesh& mesh, const cartesianGrid& grid)
+{
+    // A linear field is interpolated exactly between the outer centres
+    const vector slope(3, -2, 5);
+    scalarField eps(mesh.nCells());
+    forAll(eps, c)
+    {
+        eps[c] = (slope & mesh.C()[c]) + 1;
+    }
+    const vectorField U(mesh.nCells(), vector(1, 2, 3));
+    Random rnd(5);
+    scalar worst = 0;
+    for (label n = 0; n < 10000; ++n)
+    {
+        const point p
+        (
+            grid.xMin() + grid.dx()*(0.5 + rnd.sample01<scalar>()*(grid.nx() - 1)),
+            grid.yMin() + grid.dy()*(0.5 + rnd.sample01<scalar>()*(grid.ny() - 1)),
+            grid.zMin() + grid.dz()*(0.5 + rnd.sample01<scalar>()*(grid.nz() - 1))
+        );
+        scalar e;
+        vector u;
+        grid.interpolate(p.x(), p.y(), p.z(), eps, U, e, u);
+        worst = max(worst, mag(e - ((slope & p) + 1)));
+        worst = max(worst, mag(u - vector(1, 2, 3)));
+    }
+    check("trilinear: a linear field exactly (worst of 1e4)", 1 + worst, 1, 1e-13);
+
+    label cells[8];
+    scalar w[8];
+    const label c = grid.cellIJK(2, 7, 1);
+    const point& C = mesh.C()[c];
+    const label count = grid.interpolationStencil(C.x(), C.y(), C.z(), cells, w);
+    scalar wc = 0, wSum = 0;
+    for (label k = 0; k < count; ++k)
+    {
+        wSum += w[k];
+        if (cells[k] == c) wc += w[k];
+    }
+    check("trilinear stencil: eight cells", count, 8, 0);
+    check("trilinear at a centre: that cell alone", wc, 1, 1e-12);
+    check("trilinear weights add up to 1", wSum, 1, 1e-14);
+}
+
+
+void checkSphereShares(const fvMesh& mesh, const cartesianGrid& grid)
+{
+    // Spheres of the glass (3.1 mm), the large intruder (9.43 mm) and
+    // spread spheres of two and three cells, anywhere inside the column
+    const scalar pi = constant::mathematical::pi;
+    Random rnd(17);
+    const scalar radii[] = {1.55e-3, 4.715e-3, grid.dx(), 1.5*grid.dx()};
+    for (const scalar R : radii)
+    {
+        scalar worstCell = 0, worstSum = 0;
+        label most = 0, shared = 0;
+        const label span = sphereCellSpan(2*R, grid.dx());
+        for (label n = 0; n < 20000; ++n)
+        {
+            const point c
+            (
+                grid.xMin() + R + rnd.sample01<scalar>()*(grid.xMax() - grid.xMin() - 2*R),
+                grid.yMin() + R + rnd.sample01<scalar>()*(grid.yMax() - grid.yMin() - 2*R),
+                grid.zMin() + R + rnd.sample01<scalar>()*(grid.zMax() - grid.zMin() - 2*R)
+            );
+            scalar sum = 0;
+            label count = 0;
+            forEachSphereBoxOverlap
+            (
+                grid, c.x(), c.y(), c.z(), R,
+                [&](const label celli, const scalar V)
+                {
+                    const point& lo = mesh.C()[celli];
+                    const scalar h = 0.5*grid.dx();
+                    const scalar exact = sphereBoxOverlap
+                    (
+                        c.x(), c.y(), c.z(), R,
+                        lo.x() - h, lo.x() + h, lo.y() - h, lo.y() + h,
+                        lo.z() - h, lo.z() + h
+                    );
+                    worstCell = max(worstCell, mag(V - exact)/pow3(R));
+                    sum += V;
+                    ++count;
+                }
+            );
+            most = max(most, count);
+            shared += count > 1;
+            worstSum = max(worstSum, mag(sum - 4*pi*pow3(R)/3)/pow3(R));
+        }
+        const std::string r = " (R = " + std::to_string(R*1e3) + " mm, worst of 2e4)";
+        check("each cell's share = its sphere-box volume" + r, 1 + worstCell, 1, 1e-12);
+        check("the shares add up to the sphere" + r, 1 + worstSum, 1, 1e-12);
+        check("cells per sphere within the span" + r, most <= span*span*span, 1, 0);
+        check("spheres straddle cells" + r, shared > 2000, 1, 0);
+    }
+}
+
+
+void checkSpheres3D(const fvMesh& mesh, const cartesianGrid& grid)
+{
+    const scalar pi = constant::mathematical::pi;
+    const label nCells = grid.nx()*grid.ny()*grid.nz();
+    const scalar Vc = grid.cellVolume();
+    const scalar voidageMin = 0.05;
+    auto select = [&](const char* entries)
+    {
+        return voidageModel::New(dictionary(IStringStream(entries)()), grid, voidageMin);
+    };
+    autoPtr<voidageModel> exact(select("voidageModel spheres3D;"));
+    const scalar Ds = 2*grid.dx();
+    autoPtr<voidageModel> spread
+    (
+        select("voidageModel spheres3D; spheres3DCoeffs { spreadingDiameter 0.01905; }")
+    );
+    check("spheres3D selected", exact->type() == "spheres3D", 1, 0);
+    check("spheres3D: 8 cells at most for particles up to a cell", exact->stride(), 8, 0);
+
+    // 4000 glass beads and 4 intruders at random (overlaps allowed): the
+    // volume mapped is the particles', on 1 and 2 threads alike
+    {
+        Random rnd(23);
+        const label n = 4004;
+        List<double> x(n), y(n), z(n), d(n);
+        scalar Vp = 0;
+        for (label i = 0; i < n; ++i)
+        {
+            d[i] = i < 4 ? 9.43e-3 : 3.101e-3;
+            const scalar r = 0.5*d[i];
+            x[i] = grid.xMin() + r + rnd.sample01<scalar>()*(grid.xMax() - grid.xMin() - 2*r);
+            y[i] = grid.yMin() + r + rnd.sample01<scalar>()*(0.08 - 2*r);
+            z[i] = grid.zMin() + r + rnd.sample01<scalar>()*(grid.zMax() - grid.zMin() - 2*r);
+            Vp += pi*pow3(d[i])/6;
+        }
+        for (voidageModel* model : {exact.get(), spread.get()})
+        {
+            scalarField eps1(nCells), phiP1(nCells), eps2(nCells), phiP2(nCells);
+            model->updateOverlaps(n, x.cdata(), y.cdata(), z.cdata(), d.cdata(), 1);
+            model->updateFields(n, d.cdata(), eps1, phiP1);
+            model->updateOverlaps(n, x.cdata(), y.cdata(), z.cdata(), d.cdata(), 2);
+            model->updateFields(n, d.cdata(), eps2, phiP2);
+            const std::string m = model == exact.get() ? " (exact)" : " (spread)";
+            check("mapped volume = particles' volume" + m, sum(phiP1)*Vc, Vp, 1e-12);
+            check("voidage = max(1 - phiP, voidageMin)" + m, max(mag(eps1 - max(1 - phiP1, voidageMin))), 0, 0);
+            check("2 threads: the same fields bit for bit" + m, max(mag(phiP1 - phiP2)), 0, 0);
+            label most = 0;
+            forAll(model->counts(), i) most = max(most, model->counts()[i]);
+            check("cells per particle within the stride" + m, most <= model->stride(), 1, 0);
+        }
+    }
+
+    // A simple cubic lattice of touching spheres, spacing a third of a
+    // cell, its centres on the grid lines: every cell away from the walls
+    // holds a solid fraction pi/6
+    {
+        const scalar s = grid.dx()/3;
+        DynamicList<double> x, y, z, d;
+        for (label i = 1; i < 3*grid.nx(); ++i)
+        for (label j = 1; j < 18; ++j)
+        for (label k = 1; k < 3*grid.nz(); ++k)
+        {
+            x.append(grid.xMin() + i*s);
+            y.append(grid.yMin() + j*s);
+            z.append(grid.zMin() + k*s);
+            d.append(s);
+        }
+        scalarField eps(nCells), phiP(nCells);
+        exact->updateOverlaps(x.size(), x.cdata(), y.cdata(), z.cdata(), d.cdata(), 1);
+        exact->updateFields(x.size(), d.cdata(), eps, phiP);
+        scalar worst = 0;
+        for (label i = 1; i < grid.nx() - 1; ++i)
+        for (label j = 1; j < 5; ++j)
+        for (label k = 1; k < grid.nz() - 1; ++k)
+        {
+            worst = max(worst, mag(eps[grid.cellIJK(i, j, k)] - (1 - pi/6)));
+        }
+        check("cubic lattice: eps = 1 - pi/6 in the inner cells", 1 + worst, 1, 1e-12);
+        check("cubic lattice: empty cell above", eps[grid.cellIJK(1, 8, 1)], 1, 0);
+    }
+
+    // One intruder spread over a sphere of diameter Ds: each cell holds the
+    // share of the spreading sphere's volume inside it
+    {
+        const double x = grid.xMin() + 1.3*grid.dx();
+        const double y = grid.yMin() + 5.6*grid.dy();
+        const double z = grid.zMin() + 2.1*grid.dz();
+        const double d = 9.43e-3;
+        scalarField eps(nCells), phiP(nCells);
+        spread->updateOverlaps(1, &x, &y, &z, &d, 1);
+        spread->updateFields(1, &d, eps, phiP);
+        const scalar Rs = 0.5*Ds;
+        const label c = grid.cellIJK(1, 5, 2);
+        const scalar h = 0.5*grid.dx();
+        const point& C = mesh.C()[c];
+        const scalar share = sphereBoxOverlap
+        (
+            x, y, z, Rs, C.x() - h, C.x() + h, C.y() - h, C.y() + h,
+            C.z() - h, C.z() + h
+        )/(4*pi*pow3(Rs)/3);
+        check("spread: the own cell's share of the spreading sphere", phiP[c], pi*pow3(d)/6/Vc*share, 1e-12);
+        check("spread: the own cell holds less than the whole", share < 0.5, 1, 0);
+        check("spread: the volume kept", sum(phiP)*Vc, pi*pow3(d)/6, 1e-12);
+    }
+
+    // Beside a wall the spreading sphere's part beyond it stays with the
+    // cells at the wall: the volume is kept
+    {
+        const double x = grid.xMin() + 0.5*9.43e-3;
+        const double y = grid.yMin() + 0.5*9.43e-3;
+        const double z = grid.zMax() - 0.5*9.43e-3;
+        const double d = 9.43e-3;
+        scalarField eps(nCells), phiP(nCells);
+        spread->updateOverlaps(1, &x, &y, &z, &d, 1);
+        spread->updateFields(1, &d, eps, phiP);
+        check("spread at a corner: the volume kept", sum(phiP)*Vc, pi*pow3(d)/6, 1e-12);
+    }
+}
+
+
+int main(int argc, char *argv[])
+{
+    argList::noParallel();
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    const cartesianGrid grid(mesh);
+    checkGrid(mesh, grid);
+    checkInterpolation(mesh, grid);
+    checkSphereShares(mesh, grid);
+    checkSpheres3D(mesh, grid);
+
+    Info<< nl << nPassed << " passed, " << nFailed << " failed" << endl;
+    if (nFailed)
+    {
+        FatalErrorInFunction
+            << nFailed << " checks failed" << exit(FatalError);
+    }
+    return 0;
+}
