@@ -9,6 +9,7 @@
 #include "dem/System.hpp"
 
 #include "PairGroups.hpp"
+#include "Placement.hpp"
 #include "StreamingLoops.hpp"
 
 #include <algorithm>
@@ -26,14 +27,14 @@ using Index = std::ptrdiff_t;   // OpenMP loop index
 double smallestDiameter(const Settings& s)
 {
     double d = INFINITY;
-    for (const auto& c : s.classes) d = std::min(d, c.diameter);
+    for (const auto& c : s.classes) d = std::min(d, dem::smallestDiameter(c));
     return d;
 }
 
 double largestDiameter(const Settings& s)
 {
     double d = 0.0;
-    for (const auto& c : s.classes) d = std::max(d, c.diameter);
+    for (const auto& c : s.classes) d = std::max(d, dem::largestDiameter(c));
     return d;
 }
 
@@ -62,12 +63,17 @@ EngineBase<Derived, Traits>::EngineBase(const Settings& settings, std::vector<Wa
     streamingLoops();   // a bad $DEM_SIMD is an error here, not at the first step
     constexpr double pi = 3.14159265358979323846;
     const ContactSettings& c = settings_.contact;
+    // A class's laws take the mass and radius of its mean diameter; the rolling clamp the
+    // moment of inertia of its smallest, which the clamp stops fastest (a class of one
+    // diameter: the three alike)
     std::vector<double> m(nClasses_), r(nClasses_), inertia(nClasses_);
     for (int k = 0; k < nClasses_; ++k) {
-        const double d = settings_.classes[k].diameter;
+        const double d = meanDiameter(settings_.classes[k]);
         m[k] = settings_.classes[k].density * pi * d * d * d / 6.0;
         r[k] = 0.5 * d;
-        inertia[k] = m[k] * d * d / 10.0;   // a solid sphere, as Particles has it
+        const double dSmall = dem::smallestDiameter(settings_.classes[k]);
+        const double mSmall = settings_.classes[k].density * pi * dSmall * dSmall * dSmall / 6.0;
+        inertia[k] = mSmall * dSmall * dSmall / 10.0;   // a solid sphere, as Particles has it
     }
     hertzMindlin_ = c.law == ContactLawType::hertzMindlin;
     const std::vector<ParticleClass>& cls = settings_.classes;
@@ -121,7 +127,22 @@ template <class Derived, class Traits>
 double EngineBase<Derived, Traits>::packBed(const BedRecipe& recipe, const SettleProgress& progress)
 {
     checkPackBed(p_.size(), recipe);
-    derived().packRandom(recipe.countPerClass, recipe.region, recipe.seed);
+    const Box& b = settings_.box;
+    const Box& region = recipe.region;
+    if (!recipe.placed.empty()
+        && !(region.xMin >= b.xMin && region.xMax <= b.xMax && region.yMin >= b.yMin
+             && region.yMax <= b.yMax)) {
+        throw Error("packing region [" + formatValue(region.xMin) + ", " + formatValue(region.xMax)
+                    + "] x [" + formatValue(region.yMin) + ", " + formatValue(region.yMax)
+                    + "] m is outside the box");
+    }
+    std::vector<int> drawn;
+    for (const LaidParticle& q : layPlacedParticles(settings_, recipe, drawn)) {
+        derived().appendAtRest(q.classIndex, q.diameter, q.position);
+    }
+    std::vector<int> rest(recipe.countPerClass);
+    for (std::size_t k = 0; k < rest.size() && k < drawn.size(); ++k) rest[k] -= drawn[k];
+    derived().packRest(rest, recipe.region, recipe.seed, drawn);
     const double spent = settle(recipe.settleTime, recipe.keTolerance, progress);
     recipe_ = recipe;
     return spent;

@@ -1,9 +1,12 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Random packing: random sequential addition of non-overlapping particles in a region,
-// largest class first (the small ones then fill the gaps), positions uniform for every
-// class so that the mixture is well mixed. Draws come from dem::Random (reproducible).
-// packBed adds the settling and keeps the recipe, which the state file records.
+// largest class first (the small ones then fill the gaps; within a class with a diameter
+// distribution the largest diameters first), positions uniform for every class so that the
+// mixture is well mixed. Draws come from dem::Random (reproducible): the positions from the
+// seed, each class's diameters from a stream of its own (drawClassDiameters). packBed lays
+// the placed particles first (Placement.cpp), adds the settling and keeps the recipe, which
+// the state file records.
 
 #include "dem/Random.hpp"
 #include "dem/StateRecord.hpp"
@@ -11,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 
 namespace dem {
@@ -58,7 +62,30 @@ private:
 
 } // namespace
 
+std::vector<double> restOfClass(const ParticleClass& c, int k, int drawnBefore, int n,
+                                std::uint64_t seed)
+{
+    std::vector<double> d = drawClassDiameters(c, k, drawnBefore + n, seed);
+    d.erase(d.begin(), d.begin() + drawnBefore);
+    std::stable_sort(d.begin(), d.end(), std::greater<double>());
+    return d;
+}
+
 void System::packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed)
+{
+    packRest(countPerClass, region, seed, std::vector<int>(settings_.classes.size(), 0));
+}
+
+void System::appendAtRest(int cls, double d, const Vector3& position)
+{
+    checkClass(cls);
+    p_.append(cls, d, settings_.classes[cls].density, position.x, position.y, 0.0, 0.0, 0.0);
+    listValid_ = false;
+    forcesValid_ = false;
+}
+
+void System::packRest(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed,
+                      const std::vector<int>& drawnBefore)
 {
     if (static_cast<int>(countPerClass.size()) != nClasses_) {
         throw Error("countPerClass has " + std::to_string(countPerClass.size())
@@ -66,7 +93,7 @@ void System::packRandom(const std::vector<int>& countPerClass, const Box& region
                     + std::to_string(nClasses_) + "] (one per size class)");
     }
     for (int k = 0; k < nClasses_; ++k) {
-        if (countPerClass[k] < 1) {
+        if (countPerClass[k] + drawnBefore[k] < 1) {
             throw Error("countPerClass[" + std::to_string(k) + "] ('" + settings_.classes[k].name
                         + "') = " + std::to_string(countPerClass[k])
                         + " is outside [1, inf): an empty size class");
@@ -79,12 +106,13 @@ void System::packRandom(const std::vector<int>& countPerClass, const Box& region
     }
 
     double dMax = 0.0;
-    for (const auto& c : settings_.classes) dMax = std::max(dMax, c.diameter);
+    for (const auto& c : settings_.classes) dMax = std::max(dMax, largestDiameter(c));
     for (double d : p_.diameter) dMax = std::max(dMax, d);
 
     // Existing particles take part in the overlap test.
     std::vector<double> px(p_.x), py(p_.y), pr(p_.radius);
     std::vector<int> pc;
+    std::vector<double> pd;   // the new particles' diameters
     PackingGrid grid(b, dMax);
     for (std::size_t k = 0; k < px.size(); ++k) grid.insert(static_cast<int>(k), px[k], py[k]);
     const std::size_t firstNew = px.size();
@@ -94,12 +122,15 @@ void System::packRandom(const std::vector<int>& countPerClass, const Box& region
     Random random(seed);
     constexpr int maxAttempts = 100000;
     for (int k : order) {
-        const double r = 0.5 * settings_.classes[k].diameter;
-        if (region.xMax - region.xMin < 2.0 * r || region.yMax - region.yMin < 2.0 * r) {
+        const double rMax = 0.5 * largestDiameter(settings_.classes[k]);
+        if (region.xMax - region.xMin < 2.0 * rMax || region.yMax - region.yMin < 2.0 * rMax) {
             throw Error("packing region " + boxText(region) + " is narrower than a particle of class '"
                         + settings_.classes[k].name + "'");
         }
+        const std::vector<double> diameters = restOfClass(settings_.classes[k], k, drawnBefore[k],
+                                                          countPerClass[k], seed);
         for (int count = 0; count < countPerClass[k]; ++count) {
+            const double r = 0.5 * diameters[count];
             bool placed = false;
             for (int attempt = 0; attempt < maxAttempts && !placed; ++attempt) {
                 const double x = random.uniform(region.xMin + r, region.xMax - r);
@@ -115,6 +146,7 @@ void System::packRandom(const std::vector<int>& countPerClass, const Box& region
                 py.push_back(y);
                 pr.push_back(r);
                 pc.push_back(k);
+                pd.push_back(diameters[count]);
                 grid.insert(index, x, y);
                 placed = true;
             }
@@ -141,7 +173,7 @@ void System::packRandom(const std::vector<int>& countPerClass, const Box& region
     });
     for (std::size_t q : rank) {
         const int k = pc[q];
-        p_.append(k, settings_.classes[k].diameter, settings_.classes[k].density,
+        p_.append(k, pd[q], settings_.classes[k].density,
                   px[firstNew + q], py[firstNew + q], 0.0, 0.0, 0.0);
     }
     listValid_ = false;

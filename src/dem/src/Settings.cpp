@@ -158,7 +158,7 @@ std::vector<int> classesLargestFirst(const Settings& settings)
     std::vector<int> order(settings.classes.size());
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(), [&](int a, int c) {
-        return settings.classes[a].diameter > settings.classes[c].diameter;
+        return meanDiameter(settings.classes[a]) > meanDiameter(settings.classes[c]);
     });
     return order;
 }
@@ -183,7 +183,11 @@ void validateSettings(const Settings& s)
     }
     for (std::size_t k = 0; k < s.classes.size(); ++k) {
         const int ki = static_cast<int>(k);
-        requirePositive(s.classes[k].diameter, className(s, ki) + ".diameter");
+        if (s.classes[k].distribution.type == DiameterDistributionType::single) {
+            requirePositive(s.classes[k].diameter, className(s, ki) + ".diameter");
+        } else {
+            validateDistribution(s.classes[k].distribution, className(s, ki));
+        }
         requirePositive(s.classes[k].density, className(s, ki) + ".density");
     }
     const ContactSettings& c = s.contact;
@@ -251,7 +255,7 @@ void validateSettings(const Settings& s)
     }
     if (s.dimension == 3) {
         double dMax = 0.0;
-        for (const auto& c : s.classes) dMax = std::max(dMax, c.diameter);
+        for (const auto& c : s.classes) dMax = std::max(dMax, largestDiameter(c));
         if (!(s.slabDepth >= dMax) || !std::isfinite(s.slabDepth)) {
             throw Error("slabDepth = " + formatValue(s.slabDepth) + " m is outside ["
                         + formatValue(dMax) + ", inf): the slab (dimension 3) must hold the "

@@ -9,7 +9,7 @@
 // the step of the last list build (the adaptive skin's state), and a checksum (64-bit
 // FNV-1a of every byte before it) ahead of the end marker.
 // Version policy: as the 2D engine's (StateFile.cpp): this version only is written and
-// read, an older one (1-4) is refused naming the command that converts it.
+// read, an older one (1-5) is refused naming the command that converts it.
 
 #include "StateIntegrity.hpp"
 #include "dem/StateConversion.hpp"
@@ -49,6 +49,22 @@ std::vector<double> slabKey(const Settings& s)
 void SlabSystem::packRandom(const std::vector<int>& countPerClass, const Box& region,
                             std::uint64_t seed)
 {
+    packRest(countPerClass, region, seed, std::vector<int>(settings_.classes.size(), 0));
+}
+
+void SlabSystem::appendAtRest(int cls, double d, const Vector3& position)
+{
+    checkClass(cls);
+    p_.append(cls, d, settings_.classes[cls].density,
+              Eigen::Vector3d(position.x, position.y, position.z), Eigen::Vector3d::Zero(),
+              Eigen::Vector3d::Zero());
+    listValid_ = false;
+    forcesValid_ = false;
+}
+
+void SlabSystem::packRest(const std::vector<int>& countPerClass, const Box& region,
+                          std::uint64_t seed, const std::vector<int>& drawnBefore)
+{
     recipe_.reset();   // packBed sets it once the bed has settled
     if (static_cast<int>(countPerClass.size()) != nClasses_) {
         throw Error("countPerClass has " + std::to_string(countPerClass.size())
@@ -61,7 +77,7 @@ void SlabSystem::packRandom(const std::vector<int>& countPerClass, const Box& re
         throw Error("packing region is outside the box");
     }
     double dMax = 0.0;
-    for (const auto& c : settings_.classes) dMax = std::max(dMax, c.diameter);
+    for (const auto& c : settings_.classes) dMax = std::max(dMax, largestDiameter(c));
 
     // Bins of dMax in x-y through the whole depth (the slab is a few diameters deep).
     const int nx = std::max(1, static_cast<int>((b.xMax - b.xMin) / dMax));
@@ -72,6 +88,7 @@ void SlabSystem::packRandom(const std::vector<int>& countPerClass, const Box& re
     std::vector<Eigen::Vector3d> pos;
     std::vector<double> rad;
     std::vector<int> cls;
+    std::vector<double> diam;   // the new particles' diameters, from firstNew
     for (std::size_t k = 0; k < p_.size(); ++k) {
         bins[row(p_.y[k]) * nx + column(p_.x[k])].push_back(static_cast<int>(pos.size()));
         pos.push_back(p_.position(k));
@@ -85,8 +102,10 @@ void SlabSystem::packRandom(const std::vector<int>& countPerClass, const Box& re
     constexpr int maxAttempts = 100000;
     const double depth = settings_.slabDepth;
     for (int k : order) {
-        const double r = 0.5 * settings_.classes[k].diameter;
+        const std::vector<double> diameters = restOfClass(settings_.classes[k], k, drawnBefore[k],
+                                                          countPerClass[k], seed);
         for (int count = 0; count < countPerClass[k]; ++count) {
+            const double r = 0.5 * diameters[count];
             bool placed = false;
             for (int attempt = 0; attempt < maxAttempts && !placed; ++attempt) {
                 const Eigen::Vector3d q(random.uniform(region.xMin + r, region.xMax - r),
@@ -110,6 +129,7 @@ void SlabSystem::packRandom(const std::vector<int>& countPerClass, const Box& re
                 pos.push_back(q);
                 rad.push_back(r);
                 cls.push_back(k);
+                diam.push_back(diameters[count]);
                 placed = true;
             }
             if (!placed) {
@@ -130,7 +150,7 @@ void SlabSystem::packRandom(const std::vector<int>& countPerClass, const Box& re
         return a < c;
     });
     for (std::size_t q : rank) {
-        p_.append(cls[q], settings_.classes[cls[q]].diameter, settings_.classes[cls[q]].density,
+        p_.append(cls[q], diam[q - firstNew], settings_.classes[cls[q]].density,
                   pos[q], Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
     }
     listValid_ = false;
@@ -168,6 +188,7 @@ void SlabSystem::save(const std::string& path) const
             value(recipe_->seed);
             value(recipe_->settleTime);
             value(recipe_->keTolerance);
+            array(placedRecord(*recipe_));
         }
         value(stepCount_);
         value(listBuilds_);
@@ -269,6 +290,11 @@ void SlabSystem::load(const std::string& path)
         value(recipe.seed);
         value(recipe.settleTime);
         value(recipe.keTolerance);
+        std::vector<double> placed;
+        array(placed);
+        if (!placedOfRecord(placed, recipe.placed)) {
+            fail("a record of placed particles of " + std::to_string(placed.size()) + " values");
+        }
         if (recipe.countPerClass.size() != static_cast<std::size_t>(nClasses_)) {
             fail("a bed recipe of " + std::to_string(recipe.countPerClass.size()) + " classes");
         }

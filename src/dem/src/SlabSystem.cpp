@@ -103,7 +103,7 @@ void SlabSystem::addWall(const Vec3& point, const Vec3& normal)
 void SlabSystem::addParticle(int cls, const Vec3& pos, const Vec3& vel, const Vec3& spin)
 {
     checkClass(cls);
-    const double d = settings_.classes[cls].diameter;
+    const double d = meanDiameter(settings_.classes[cls]);   // a distribution's mean
     const double r = 0.5 * d;
     for (std::size_t w = 0; w < walls_.size(); ++w) {
         if (!(walls_[w].distance(pos) >= r - 0.01 * d)) {

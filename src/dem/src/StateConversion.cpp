@@ -9,7 +9,8 @@
 // 6 the run record and the checksum; 7 the contact law, tangential damping ratio, rolling
 // friction and moduli in the settings key. Slab: version 1 had no bed recipe; 2 added it; 3
 // the skin and the step of the last list build; 4 the run record and the checksum; 5 the
-// key's contact entries as the 2D version 7.
+// key's contact entries as the 2D version 7. 2D version 8 and slab version 6 added the
+// recipe's placed particles (an earlier recipe has none).
 
 #include "dem/StateConversion.hpp"
 
@@ -19,6 +20,7 @@
 #include "dem/Facade.hpp"
 #include "dem/Particles.hpp"
 #include "dem/SlabSystem.hpp"
+#include "dem/StateRecord.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -95,6 +97,7 @@ private:
     std::string bytes_;
 };
 
+/// A recipe of the earlier versions: without placed particles.
 std::optional<BedRecipe> readRecipe(In& in)
 {
     if (in.value<std::uint8_t>() == 0) return std::nullopt;
@@ -116,6 +119,7 @@ void writeRecipe(Out& out, const std::optional<BedRecipe>& r)
     out.value(r->seed);
     out.value(r->settleTime);
     out.value(r->keTolerance);
+    out.array(placedRecord(*r));
 }
 
 /// The contact law a run record names on its "contactLaw <name>" line (the OpenFOAM side's
@@ -189,14 +193,14 @@ template <class List> void writeWalls(Out& out, const List& l)
     out.array(l.start); out.array(l.wall); out.array(l.xi);
 }
 
-/// A 2D state of versions 2-6 in the current layout.
+/// A 2D state of versions 2-7 in the current layout.
 std::string convertDisc(In& in, std::uint32_t version, std::string& notes)
 {
     std::vector<char> record;
     if (version >= 6) in.array(record);
     std::vector<double> key;
     in.array(key);
-    key = currentKey(in, key, record, notes);
+    if (version < 7) key = currentKey(in, key, record, notes);
     const std::optional<BedRecipe> recipe = version >= 4 ? readRecipe(in) : std::nullopt;
     const auto stepCount = in.value<std::int64_t>();
     const auto listBuilds = in.value<std::int64_t>();
@@ -253,7 +257,7 @@ std::string convertDisc(In& in, std::uint32_t version, std::string& notes)
     return out.bytes();
 }
 
-/// A slab state of versions 1-4 in the current layout.
+/// A slab state of versions 1-5 in the current layout.
 std::string convertSlab(In& in, std::uint32_t version, std::string& notes)
 {
     std::vector<char> record;
@@ -294,7 +298,7 @@ std::string convertSlab(In& in, std::uint32_t version, std::string& notes)
     readWalls(in, walls);
     if (version >= 4) in.value<std::uint64_t>();   // the checksum, verified before
     in.endMarker(slabStateMagic);
-    key = currentKey(in, key, record, notes);   // after the skin, which reads the old key
+    if (version < 5) key = currentKey(in, key, record, notes);   // after the skin, which reads the old key
 
     Out out;
     out.raw(slabStateMagic, sizeof(slabStateMagic));

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <sstream>
 #include <utility>
 
@@ -21,7 +22,8 @@ std::vector<std::string> settingsKeyNames(const Settings& s)
 {
     std::vector<std::string> names{"number of size classes"};
     for (const auto& c : s.classes) {
-        names.push_back("class '" + c.name + "' diameter");
+        const bool single = c.distribution.type == DiameterDistributionType::single;
+        names.push_back("class '" + c.name + (single ? "' diameter" : "' mean diameter"));
         names.push_back("class '" + c.name + "' density");
     }
     for (const char* n : {"contact kn", "contact kt", "contact restitution",
@@ -72,6 +74,48 @@ std::vector<OwnEntry> ownEntries(const Settings& s)
                        own.rollingFriction});
     }
     return out;
+}
+
+/// The entries of each class's diameter distribution in the key, after the own coefficients
+/// where any class has one: its type (0 single, 1 normal, 2 samples), the normal's mean,
+/// standard deviation, min and max, the samples' count and their checksum (0 for a single
+/// diameter).
+constexpr std::size_t distributionEntries = 7;
+
+bool anyDistribution(const Settings& s)
+{
+    return std::any_of(s.classes.begin(), s.classes.end(), [](const ParticleClass& c) {
+        return c.distribution.type != DiameterDistributionType::single;
+    });
+}
+
+/// The samples' FNV-1a checksum, its top 53 bits (a double holds them exactly).
+double samplesChecksum(const std::vector<double>& samples)
+{
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (double v : samples) {
+        unsigned char bytes[sizeof(double)];
+        std::memcpy(bytes, &v, sizeof(double));
+        for (unsigned char b : bytes) h = (h ^ b) * 0x100000001b3ull;
+    }
+    return static_cast<double>(h >> 11);
+}
+
+void appendDistribution(std::vector<double>& key, const DiameterDistribution& d)
+{
+    const bool normal = d.type == DiameterDistributionType::truncatedNormal;
+    const bool samples = d.type == DiameterDistributionType::samples;
+    key.push_back(normal ? 1.0 : samples ? 2.0 : 0.0);
+    for (double v : {d.mean, d.standardDeviation, d.min, d.max}) key.push_back(normal ? v : 0.0);
+    key.push_back(samples ? static_cast<double>(d.samples.size()) : 0.0);
+    key.push_back(samples ? samplesChecksum(d.samples) : 0.0);
+}
+
+std::string distributionCodeName(double code)
+{
+    if (code == 1.0) return distributionName(DiameterDistributionType::truncatedNormal);
+    if (code == 2.0) return distributionName(DiameterDistributionType::samples);
+    return "none (one diameter)";
 }
 
 /// The law as the key stores it (0 linear, 1 HertzMindlin) and its name.
@@ -132,6 +176,24 @@ std::pair<std::string, std::string> apart(const Box& a, const Box& b)
             "[" + x0b + ", " + x1b + "] x [" + y0b + ", " + y1b + "] m"};
 }
 
+std::string placedText(const Settings& s, const PlacedParticle& p)
+{
+    const bool known = p.classIndex >= 0 && p.classIndex < static_cast<int>(s.classes.size());
+    const std::string cls = known ? "'" + s.classes[p.classIndex].name + "'"
+                                  : std::to_string(p.classIndex);
+    if (p.random) return cls + " at random";
+    return cls + " at (" + formatValue(p.position.x) + ", " + formatValue(p.position.y)
+           + (s.dimension == 3 ? ", " + formatValue(p.position.z) : std::string()) + ") m";
+}
+
+bool samePlaced(const PlacedParticle& a, const PlacedParticle& b, int dimension)
+{
+    if (a.classIndex != b.classIndex || a.random != b.random) return false;
+    if (a.random) return true;
+    return a.position.x == b.position.x && a.position.y == b.position.y
+           && (dimension != 3 || a.position.z == b.position.z);
+}
+
 } // namespace
 
 std::pair<std::string, std::string> textsApart(double a, double b)
@@ -146,7 +208,7 @@ std::vector<double> settingsKey(const Settings& s, double skin)
     std::vector<double> key;
     key.push_back(static_cast<double>(s.classes.size()));
     for (const auto& c : s.classes) {
-        key.push_back(c.diameter);
+        key.push_back(meanDiameter(c));
         key.push_back(c.density);
     }
     const ContactSettings& c = s.contact;
@@ -172,6 +234,11 @@ std::vector<double> settingsKey(const Settings& s, double skin)
     if (anyOwn) {
         for (const OwnEntry& e : own) key.push_back(e.value);
     }
+    // Every class's diameter distribution where one has one: without them the key (and the
+    // file) is the one of classes of one diameter each
+    if (anyDistribution(s)) {
+        for (const auto& m : s.classes) appendDistribution(key, m.distribution);
+    }
     key.push_back(skin);
     return key;
 }
@@ -182,9 +249,19 @@ std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
     const std::vector<std::string> names = settingsKeyNames(s);
     const std::vector<OwnEntry> own = ownEntries(s);
     const std::size_t base = names.size();
-    // A key holds the own coefficients or not, and the skin last
-    auto holdsOwn = [&](const std::vector<double>& key) { return key.size() == base + own.size() + 1; };
-    auto valid = [&](const std::vector<double>& key) { return key.size() == base + 1 || holdsOwn(key); };
+    const std::size_t distributions = distributionEntries * s.classes.size();
+    // A key holds the own coefficients or not, the distributions or not, and the skin last
+    // (the four sizes differ for every number of classes)
+    auto holdsOwn = [&](const std::vector<double>& key) {
+        return key.size() == base + own.size() + 1 || key.size() == base + own.size() + distributions + 1;
+    };
+    auto holdsDistributions = [&](const std::vector<double>& key) {
+        return key.size() == base + distributions + 1
+               || key.size() == base + own.size() + distributions + 1;
+    };
+    auto valid = [&](const std::vector<double>& key) {
+        return key.size() == base + 1 || holdsOwn(key) || holdsDistributions(key);
+    };
     if (inFile.empty() || here.empty() || inFile[0] != here[0] || !valid(inFile) || !valid(here)) {
         // Another number of classes (or a damaged key): the positions do not correspond.
         const std::string n = inFile.empty() ? std::string("none")
@@ -228,6 +305,32 @@ std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
         if (a == b || (a == inFile[global] && b == here[global])) continue;
         d.push_back(differ(own[q].name, a, b));
     }
+    // Each class's distribution: its entries where the key holds them, else one diameter's
+    auto distribution = [&](const std::vector<double>& key, std::size_t k) {
+        std::vector<double> out(distributionEntries, 0.0);
+        if (holdsDistributions(key)) {
+            const std::size_t at = key.size() - 1 - distributions + distributionEntries * k;
+            std::copy(key.begin() + at, key.begin() + at + distributionEntries, out.begin());
+        }
+        return out;
+    };
+    static const char* const entryNames[] = {"distribution", "mean", "standardDeviation",
+                                             "min", "max", "samples count", "samples"};
+    for (std::size_t k = 0; k < s.classes.size(); ++k) {
+        const std::vector<double> a = distribution(inFile, k);
+        const std::vector<double> b = distribution(here, k);
+        const std::string name = "class '" + s.classes[k].name + "' diameter ";
+        if (a[0] != b[0]) {
+            d.push_back({name + entryNames[0], distributionCodeName(a[0]), distributionCodeName(b[0])});
+            continue;
+        }
+        for (std::size_t q = 1; q + 1 < distributionEntries; ++q) {
+            if (a[q] != b[q]) d.push_back(differ(name + entryNames[q], a[q], b[q]));
+        }
+        if (a.back() != b.back()) {
+            d.push_back({name + entryNames[distributionEntries - 1], "another list", "this one"});
+        }
+    }
     return d;
 }
 
@@ -267,7 +370,40 @@ std::vector<Difference> compareRecipes(const BedRecipe& inFile, const BedRecipe&
     if (inFile.keTolerance != here.keTolerance) {
         d.push_back(differ("settling tolerance", inFile.keTolerance, here.keTolerance, " J"));
     }
+    if (inFile.placed.size() != here.placed.size()) {
+        d.push_back({"placed particles", std::to_string(inFile.placed.size()),
+                     std::to_string(here.placed.size())});
+    } else {
+        for (std::size_t q = 0; q < here.placed.size(); ++q) {
+            if (samePlaced(inFile.placed[q], here.placed[q], s.dimension)) continue;
+            d.push_back({"placed particle " + std::to_string(q + 1),
+                         placedText(s, inFile.placed[q]), placedText(s, here.placed[q])});
+        }
+    }
     return d;
+}
+
+std::vector<double> placedRecord(const BedRecipe& recipe)
+{
+    std::vector<double> out;
+    for (const PlacedParticle& p : recipe.placed) {
+        for (double v : {static_cast<double>(p.classIndex), p.random ? 1.0 : 0.0, p.position.x,
+                         p.position.y, p.position.z}) {
+            out.push_back(v);
+        }
+    }
+    return out;
+}
+
+bool placedOfRecord(const std::vector<double>& record, std::vector<PlacedParticle>& placed)
+{
+    placed.clear();
+    if (record.size() % 5 != 0) return false;
+    for (std::size_t q = 0; q < record.size(); q += 5) {
+        placed.push_back({static_cast<int>(record[q]), record[q + 1] != 0.0,
+                          {record[q + 2], record[q + 3], record[q + 4]}});
+    }
+    return true;
 }
 
 void checkPackBed(std::size_t particles, const BedRecipe& recipe)

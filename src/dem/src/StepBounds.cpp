@@ -17,23 +17,34 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-double classMass(const ParticleClass& c)
+/// The mass of a sphere of the class's density and diameter d.
+double sphereMass(const ParticleClass& c, double d)
 {
-    return c.density * pi * c.diameter * c.diameter * c.diameter / 6.0;
+    return c.density * pi * d * d * d / 6.0;
 }
+
+/// The lightest particle of the class: of its smallest diameter.
+double classMass(const ParticleClass& c) { return sphereMass(c, smallestDiameter(c)); }
+
+/// The particle the class's contact laws are made for: of its mean diameter (the engines'
+/// laws, EngineBase.cpp).
+double lawMass(const ParticleClass& c) { return sphereMass(c, meanDiameter(c)); }
 
 std::string className(const Settings& s, int k)
 {
     return "classes[" + std::to_string(k) + "] ('" + s.classes[k].name + "')";
 }
 
-/// One kind of contact: a pair of classes or a class on a wall.
+/// One kind of contact: a pair of classes or a class on a wall. A class with a diameter
+/// distribution runs its laws made for its mean diameter (mEffLaw, rEff) with particles as
+/// light as its smallest (m, mEff): the bounds are those of the smallest particles.
 struct ContactKind {
     int a, b;            ///< the classes (b = a on a wall)
     int lighter;         ///< the lighter class
-    double m;            ///< its mass, kg
-    double mEff;         ///< effective mass, kg
-    double rEff;         ///< effective radius, m
+    double m;            ///< its lightest particle's mass, kg
+    double mEff;         ///< effective mass of the lightest particles, kg
+    double mEffLaw;      ///< effective mass the law's damping is made for, kg
+    double rEff;         ///< effective radius of the law, m
     double eStar;        ///< Hertz's effective modulus, Pa (HertzMindlin)
     bool wall;
 };
@@ -47,23 +58,26 @@ template <class Body> void forEachContactKind(const Settings& s, const Body& bod
     for (std::size_t a = 0; a < n; ++a) {
         const ParticleClass& ca = s.classes[a];
         const double ma = classMass(ca);
-        const double ra = 0.5 * ca.diameter;
+        const double la = lawMass(ca);
+        const double ra = 0.5 * meanDiameter(ca);
         for (std::size_t b = a; b < n; ++b) {
             const ParticleClass& cb = s.classes[b];
             const double mb = classMass(cb);
-            const double rb = 0.5 * cb.diameter;
+            const double lb = lawMass(cb);
+            const double rb = 0.5 * meanDiameter(cb);
             const double eStar = hertz ? effectiveYoungsModulus(ca.youngsModulus, ca.poissonRatio,
                                                                 cb.youngsModulus, cb.poissonRatio)
                                        : 0.0;
             body(ContactKind{static_cast<int>(a), static_cast<int>(b),
                              static_cast<int>(ma <= mb ? a : b), std::min(ma, mb),
-                             ma * mb / (ma + mb), ra * rb / (ra + rb), eStar, false});
+                             ma * mb / (ma + mb), la * lb / (la + lb), ra * rb / (ra + rb), eStar,
+                             false});
         }
         const double eStar = hertz ? effectiveYoungsModulus(ca.youngsModulus, ca.poissonRatio,
                                                             c.wallYoungsModulus, c.wallPoissonRatio)
                                    : 0.0;
         body(ContactKind{static_cast<int>(a), static_cast<int>(a), static_cast<int>(a), ma, ma,
-                         ra, eStar, true});
+                         la, ra, eStar, true});
     }
 }
 
@@ -87,15 +101,17 @@ double hertzPeakOverlap(const ContactKind& k, double v)
 }
 
 /// The normal damping of a kind at its largest: the linear law's eta_n, or Hertz-Mindlin's
-/// at the elastic peak overlap of an impact at hertzSpeed (damping lowers the peak), N s/m.
+/// at the elastic peak overlap of an impact at hertzSpeed (damping lowers the peak), N s/m;
+/// the law's (made for mEffLaw), the peak overlap of the lightest particles.
 double largestNormalDamping(const Settings& s, const ContactKind& k)
 {
     const ContactSettings& c = s.contact;
     const double e = restitutionOf(s, k).second;
-    if (c.law != ContactLawType::hertzMindlin) return dampingFromRestitution(k.mEff, c.kn, e);
+    if (c.law != ContactLawType::hertzMindlin) return dampingFromRestitution(k.mEffLaw, c.kn, e);
     const double hertzKn = 4.0 / 3.0 * k.eStar * std::sqrt(k.rEff);
     const double delta = hertzPeakOverlap(k, hertzSpeed(s));
-    return hertzDampingFromRestitution(e) * std::sqrt(k.mEff * hertzKn) * std::sqrt(std::sqrt(delta));
+    return hertzDampingFromRestitution(e) * std::sqrt(k.mEffLaw * hertzKn)
+           * std::sqrt(std::sqrt(delta));
 }
 
 /// The kind of contact with the smallest mEff/eta_n and that step (dashpotTimeStep).
@@ -122,7 +138,7 @@ constexpr double dashpotWarnFraction = 0.5;
 double bedSpeedScale(const Settings& settings)
 {
     double d = 0.0;
-    for (const ParticleClass& c : settings.classes) d = std::max(d, c.diameter);
+    for (const ParticleClass& c : settings.classes) d = std::max(d, largestDiameter(c));
     return std::sqrt(std::hypot(settings.gravity[0], settings.gravity[1]) * d);
 }
 
@@ -173,9 +189,11 @@ double pairContactTime(const Settings& settings)
     }
     int k = 0;
     timeStepBound(settings, &k);
+    // A pair of the class's lightest particles, with the damping of its law
     const double mEff = 0.5 * classMass(settings.classes[k]);
+    const double mEffLaw = 0.5 * lawMass(settings.classes[k]);
     const double e = pairCoefficients(c, k, k).restitution;
-    return linearContactDuration(mEff, c.kn, dampingFromRestitution(mEff, c.kn, e));
+    return linearContactDuration(mEff, c.kn, dampingFromRestitution(mEffLaw, c.kn, e));
 }
 
 // Measured with the paper's particles (TestStepBound; docs/theory/numerics.md): at dt = t_c/10 a
@@ -205,7 +223,7 @@ void checkTimeStep(const Settings& s)
         throw Error("dt = " + formatValue(s.dt) + " s is outside (0, " + formatValue(bound)
                     + "]: the time-step bound " + stiffness + " of the smallest particle, "
                     + className(s, kMin) + " of diameter "
-                    + formatValue(s.classes[kMin].diameter) + " m");
+                    + formatValue(smallestDiameter(s.classes[kMin])) + " m");
     }
     // An explicit step with a dashpot eta on a contact of effective mass mEff reverses the
     // relative velocity within one step when eta dt/mEff > 1: the contact then rebounds

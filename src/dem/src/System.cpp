@@ -42,7 +42,7 @@ System::System(const Settings& settings)
 void System::addParticle(int cls, double x, double y, double vx, double vy, double omega)
 {
     checkClass(cls);
-    const double d = settings_.classes[cls].diameter;
+    const double d = meanDiameter(settings_.classes[cls]);   // a distribution's mean
     const double r = 0.5 * d;
     const double tolerance = 0.01 * d;
     const Eigen::Vector2d pos(x, y);

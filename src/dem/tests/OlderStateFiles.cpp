@@ -68,14 +68,16 @@ std::string olderDisc(const std::string& b, std::uint32_t version, std::string& 
     if (version <= 3) {
         old.erase(l.recipe, l.recipeEnd - l.recipe);
         expected.replace(l.recipe, l.recipeEnd - l.recipe, std::string(1, '\0'));
+    } else if (b[l.recipe]) {
+        old.erase(l.placed, l.recipeEnd - l.placed);   // no placed particles before 8
     }
-    shortenKey(old, b, l.key);
+    if (version <= 6) shortenKey(old, b, l.key);
     if (version <= 5) {
         old.erase(l.record, 8 + get<std::uint64_t>(b, l.record));
         expected.replace(l.record, 8 + get<std::uint64_t>(b, l.record), std::string(8, '\0'));
     }
     put(old, 16, version);
-    if (version == 6) resign(old);
+    if (version >= 6) resign(old);
     resign(expected);
     return old;
 }
@@ -95,14 +97,16 @@ std::string olderSlab(const std::string& b, std::uint32_t version, std::string& 
     if (version <= 1) {
         old.erase(l.recipe, l.recipeEnd - l.recipe);
         expected.replace(l.recipe, l.recipeEnd - l.recipe, std::string(1, '\0'));
+    } else if (b[l.recipe]) {
+        old.erase(l.placed, l.recipeEnd - l.placed);   // no placed particles before 6
     }
-    shortenKey(old, b, l.key);
+    if (version <= 4) shortenKey(old, b, l.key);
     if (version <= 3) {
         old.erase(l.record, 8 + get<std::uint64_t>(b, l.record));
         expected.replace(l.record, 8 + get<std::uint64_t>(b, l.record), std::string(8, '\0'));
     }
     put(old, 16, version);
-    if (version == 4) resign(old);
+    if (version >= 4) resign(old);
     resign(expected);
     return old;
 }

@@ -94,7 +94,7 @@ TEST(StateConversion, EveryOlderDiscVersionBecomesTheCurrentWritersBytes)
         Simulation refused(settingsOf(2));
         const std::string e = errorOf([&] { refused.load(old); });
         EXPECT_TRUE(has(e, "state file '" + old + "' is of version " + std::to_string(version)
-                           + ", older than this build reads (7): convert it with 'dpmConvertState "
+                           + ", older than this build reads (8): convert it with 'dpmConvertState "
                            + old + "'"))
             << e;
 
@@ -129,7 +129,7 @@ TEST(StateConversion, EveryOlderSlabVersionBecomesTheCurrentWritersBytes)
         Simulation refused(settingsOf(3));
         const std::string e = errorOf([&] { refused.load(old); });
         EXPECT_TRUE(has(e, "slab state file '" + old + "' is of version " + std::to_string(version)
-                           + ", older than this build reads (5): convert it with 'dpmConvertState "
+                           + ", older than this build reads (6): convert it with 'dpmConvertState "
                            + old + "'"))
             << e;
 
@@ -161,17 +161,17 @@ TEST(StateConversion, CurrentUnknownAndForeignFilesAreNamed)
     EXPECT_FALSE(std::filesystem::exists(out));
 
     // A whole file of a version this build does not know (its checksum its own); with the
-    // checksum of version 7 it is a damaged field (TestStateIntegrity)
+    // checksum of version 8 it is a damaged field (TestStateIntegrity)
     std::string unknown = b;
     put(unknown, 16, std::uint32_t{9});
     put(unknown, unknown.size() - 24, fnv1a64(unknown.data(), unknown.size() - 24));
     writeAll(current, unknown);
     EXPECT_TRUE(has(errorOf([&] { convertState(current, out); }),
                     "state file '" + current + "' is not a valid DEM state: 2D state version 9, "
-                    "expected 2 to 7"));
+                    "expected 2 to 8"));
     Simulation sim(settingsOf(2));
     EXPECT_TRUE(has(errorOf([&] { sim.load(current); }),
-                    "state file '" + current + "' is not a valid DEM state: version 9, expected 7"));
+                    "state file '" + current + "' is not a valid DEM state: version 9, expected 8"));
 
     writeAll(current, "a bed of particles, in words");
     EXPECT_TRUE(has(errorOf([&] { convertState(current, out); }), "wrong file type"));
@@ -200,7 +200,7 @@ TEST(StateConversion, TheCommandConvertsInPlaceAndKeepsTheOriginal)
     EXPECT_TRUE(readAll(path + ".version3") == old);
     const std::string said = readAll(log);
     EXPECT_TRUE(has(said, "Converted '" + path + "' (2D state version 3) to '" + path
-                          + "' (version 7)")
+                          + "' (version 8)")
                 && has(said, "Note: it carries no checksum: its integrity could not be checked"))
         << said;
 
@@ -236,14 +236,14 @@ TEST(StateConversion, InPlaceWithABackupNameThatIsADirectoryIsRefusedCleanly)
     std::filesystem::remove_all(path + ".version3");
 }
 
-// The previous versions (2D 6, slab 4) carried a run record but no contact law in the
-// settings key: the converted file continues with the same bits as the run it was saved
-// from, and a run record naming HertzMindlin gives the key that law.
+// The versions before the contact law in the settings key (2D 6, slab 4) carried a run
+// record: the converted file continues with the same bits as the run it was saved from,
+// and a run record naming HertzMindlin gives the key that law.
 TEST(StateConversion, PreviousVersionContinuesWithTheSameBits)
 {
     for (int dimension : {2, 3}) {
         SCOPED_TRACE("dimension " + std::to_string(dimension));
-        const std::uint32_t previous = dimension == 2 ? discStateVersion - 1 : slabStateVersion - 1;
+        const std::uint32_t previous = dimension == 2 ? 6 : 4;
         const std::string path = fileName("continued" + std::to_string(dimension));
         Simulation run(settingsOf(dimension));
         const BedRecipe r = smallBedRecipe();

@@ -221,13 +221,14 @@ Foam::dpmCloud::dpmCloud
         "contactLaw " + dem::contactLawName(settings.contact.law) + "\n"
     );
     // The voidage model's own check first (slab3D: the spheres fit in the
-    // slab), in its words rather than the DEM's
+    // slab), in its words rather than the DEM's; a distribution's largest
     particleModel_.voidage().checkDiameters
     (
-        dict_, particleEngine::diametersOf(settings)
+        dict_, particleEngine::largestDiametersOf(settings)
     );
     checks.demStep(settings);
     engine_.create(settings);
+    particleEngine::reportDiameters(settings);
     Info<< "DEM: kick and drift loops for "
         << dem::streamingLoopsInUse().c_str()
         << " (environment variable DEM_SIMD = baseline or avx2 chooses;"
@@ -242,7 +243,8 @@ Foam::dpmCloud::dpmCloud
     subSteps();         // the DEM step must divide the CFD step
     formulation_->checkBedDepth
     (
-        dict_, grid_, engine_.classDiameters(), slab_, voidageMin_
+        dict_, grid_, particleEngine::largestDiametersOf(settings), slab_,
+        voidageMin_
     );
     if (mode == startMode::run)
     {

@@ -101,13 +101,21 @@ Foam::scalarList Foam::fluidizationVelocities::unitWeight(const label classi) co
 
 Foam::scalar Foam::fluidizationVelocities::recipeSauterDiameter() const
 {
+    // Sum n_k E[d^3] over sum n_k E[d^2]: a distribution's own moments
     const std::vector<int> n(engine_.classCounts());
-    const scalarList d(engine_.classDiameters());
+    const scalarList d3
+    (
+        particleEngine::classDiameterMoments(engine_.dem().settings(), 3)
+    );
+    const scalarList d2
+    (
+        particleEngine::classDiameterMoments(engine_.dem().settings(), 2)
+    );
     scalar sum3 = 0, sum2 = 0;
-    forAll(d, k)
+    forAll(d3, k)
     {
-        sum3 += n[k]*pow3(d[k]);
-        sum2 += n[k]*sqr(d[k]);
+        sum3 += n[k]*d3[k];
+        sum2 += n[k]*d2[k];
     }
     return sum3/sum2;
 }

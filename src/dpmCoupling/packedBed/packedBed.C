@@ -8,11 +8,10 @@ License
     Public License, version 3 or (at your option) any later version;
     see the file LICENSE.
 -------------------------------------------------------------------------------
-    packedBed: the bed's recipe, packing, saved beds and their matching.
+    packedBed: the bed's packing, saved beds and their matching.
 \*---------------------------------------------------------------------------*/
 
 #include "packedBed.H"
-#include "mathematicalConstants.H"
 #include "caseLock.H"
 #include "caseChecks.H"
 
@@ -26,9 +25,10 @@ namespace
 //- What a bed records, in the dictionary's words (after a refusal)
 const char* const bedEntries =
     "    A bed is made for: each class's count (or massFraction and"
-    " totalMass), diameter and density; contact; the mesh's box; g; deltaT;"
-    " initialBed's seed, settleTime and packHeight (the packing region's"
-    " height, by default from the counts)";
+    " totalMass), diameter (or its distribution) and density; contact; the"
+    " mesh's box; g; deltaT; initialBed's seed, settleTime, packHeight (the"
+    " packing region's height, by default from the counts) and place (the"
+    " particles laid first)";
 
 } // End anonymous namespace
 
@@ -71,93 +71,6 @@ Foam::fileName Foam::packedBed::bedFile() const
 }
 
 
-dem::BedRecipe Foam::packedBed::recipe() const
-{
-    const dictionary& bed = dict_.subDict("initialBed");
-    dem::BedRecipe r;
-    r.countPerClass = engine_.classCounts();
-    const scalar width = grid_.xMax() - grid_.xMin();
-    scalar area = 0;
-    forAll(classNames_, k)
-    {
-        const scalar d = engine_.dem().settings().classes[k].diameter;
-        area += r.countPerClass[k]*constant::mathematical::pi*d*d/4;
-    }
-    const scalar filled =
-        slab_ ? slabPackHeight(r.countPerClass) : 3*area/width;
-
-    // The region holds at least one of the largest particles: a few
-    // particles fill less than a row, so their default is one diameter
-    label largest = 0;
-    forAll(classNames_, k)
-    {
-        if
-        (
-            engine_.dem().settings().classes[k].diameter
-          > engine_.dem().settings().classes[largest].diameter
-        )
-        {
-            largest = k;
-        }
-    }
-    const scalar dMax = engine_.dem().settings().classes[largest].diameter;
-    const scalar columnHeight = grid_.yMax() - grid_.yMin();
-    if (width < dMax || columnHeight < dMax)
-    {
-        FatalIOErrorInFunction(dict_)
-            << "The column of system/bedGeometry (width " << width
-            << " m, height " << columnHeight << " m) is narrower than a"
-            << " particle of class '" << classNames_[largest] << "' (d = "
-            << dMax << " m, " << dict_.name() << "): make width and height"
-            << " larger (then blockMesh) or the particles smaller"
-            << exit(FatalIOError);
-    }
-    const scalar packHeight = bed.lookupOrDefault<scalar>
-    (
-        "packHeight", min(max(filled, dMax), columnHeight)
-    );
-    if (packHeight < dMax || packHeight > columnHeight)
-    {
-        FatalIOErrorInFunction(bed)
-            << "Entry 'packHeight' = " << packHeight << " in initialBed of "
-            << dict_.name() << " is outside the allowed range [" << dMax
-            << ", " << columnHeight << "]: the packing region must hold a"
-            << " particle of class '" << classNames_[largest] << "' (d = "
-            << dMax << " m) and fit in the column (height " << columnHeight
-            << " m, system/bedGeometry); set initialBed/packHeight in that"
-            << " range, or leave it out (the default follows the counts)"
-            << exit(FatalIOError);
-    }
-    r.region =
-        dem::Box
-        {
-            grid_.xMin(), grid_.xMax(), grid_.yMin(), grid_.yMin() + packHeight
-        };
-    r.seed = std::uint64_t(bed.lookupOrDefault<label>("seed", 1));
-    r.settleTime = bed.lookupOrDefault<scalar>("settleTime", 1.0);
-    r.keTolerance = 0;
-    return r;
-}
-
-
-Foam::scalar Foam::packedBed::slabPackHeight
-(
-    const std::vector<int>& counts
-) const
-{
-    // Random sequential addition jams near a solid fraction of 0.38 in 3D
-    // (0.55 for discs, packed at 1/3): the spheres are packed at 1/5
-    scalar V = 0;
-    forAll(classNames_, k)
-    {
-        const scalar d = engine_.dem().settings().classes[k].diameter;
-        V += counts[k]*constant::mathematical::pi*pow3(d)/6;
-    }
-    const scalar width = grid_.xMax() - grid_.xMin();
-    return 5*V/(width*grid_.depth());
-}
-
-
 void Foam::packedBed::checkOutput(const fileName& file) const
 {
     try
@@ -181,6 +94,10 @@ void Foam::packedBed::packNew(const dem::BedRecipe& r)
     forAll(classNames_, k)
     {
         Info<< ' ' << r.countPerClass[k] << ' ' << classNames_[k];
+    }
+    if (r.placed.size())
+    {
+        Info<< " (" << label(r.placed.size()) << " of them placed first)";
     }
     Info<< " at random in " << r.region.xMax - r.region.xMin << " x "
         << r.region.yMax - r.region.yMin << " m (seed " << label(r.seed)

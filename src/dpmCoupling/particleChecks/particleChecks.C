@@ -61,6 +61,17 @@ void Foam::particleChecks::entries(const Time& time) const
                 e.dict(), names::sizeClass(), where + "/classes/" + e.keyword(),
                 wordHashSet(), string(), {top, contact, initialBed}
             );
+            // A distribution of diameters
+            const dictionary* d = e.dict().findDict("diameter", keyType::LITERAL);
+            if (d)
+            {
+                checkKnownEntries
+                (
+                    *d, names::diameterDistribution(),
+                    where + "/classes/" + e.keyword() + "/diameter",
+                    wordHashSet(), string(), {sizeClass}
+                );
+            }
         }
     }
     checkKnownEntries
@@ -103,6 +114,24 @@ void Foam::particleChecks::entries(const Time& time) const
         dict_.subOrEmptyDict("initialBed"), names::initialBed(),
         where + "/initialBed", wordHashSet(), string(), {top, contact, sizeClass}
     );
+    // The placed particles of each class
+    const entryHome placed
+    {
+        where + "/initialBed/place/<class>", names::placedClass()
+    };
+    const dictionary bed(dict_.subOrEmptyDict("initialBed"));
+    for (const entry& e : bed.subOrEmptyDict("place"))
+    {
+        if (e.isDict())
+        {
+            checkKnownEntries
+            (
+                e.dict(), names::placedClass(),
+                where + "/initialBed/place/" + e.keyword(),
+                wordHashSet(), string(), {initialBed}
+            );
+        }
+    }
 }
 
 

@@ -13,6 +13,8 @@ License
 #include "positiveEntry.H"
 #include "mathematicalConstants.H"
 
+#include <algorithm>
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::particleEngine::particleEngine
@@ -42,19 +44,11 @@ dem::Settings Foam::particleEngine::settings
     for (const word& name : classNames_)
     {
         const dictionary& c = classes.subDict(name);
-        s.classes.push_back
-        (
-            dem::ParticleClass
-            {
-                name, c.get<scalar>("diameter"), c.get<scalar>("density"),
-                c.lookupOrDefault<scalar>("youngsModulus", 0),
-                c.lookupOrDefault<scalar>("poissonRatio", 0)
-            }
-        );
-        if (s.classes.back().diameter > grid_.minCellSize())
+        s.classes.push_back(readClass(c, name));
+        if (dem::largestDiameter(s.classes.back()) > grid_.minCellSize())
         {
             FatalIOErrorInFunction(c)
-                << "Entry 'diameter' = " << s.classes.back().diameter
+                << "Entry 'diameter' = " << dem::largestDiameter(s.classes.back())
                 << " of class " << name << " in " << dict_.name()
                 << " is larger than the gas cell (" << grid_.dx() << " x "
                 << grid_.dy();
@@ -85,7 +79,7 @@ dem::Settings Foam::particleEngine::settings
         scalar dMin = GREAT;
         for (const dem::ParticleClass& c : s.classes)
         {
-            dMin = min(dMin, c.diameter);
+            dMin = min(dMin, dem::smallestDiameter(c));
         }
         s.neighbourSkin = boundedEntry(dict_, "neighbourSkin", 0, dMin, true);
     }
@@ -118,11 +112,15 @@ std::vector<int> Foam::particleEngine::classCounts() const
         else
         {
             // A mass fraction of the bed's total mass
+            // A distribution's particles weigh rho pi/6 E[d^3] on average
             const scalar w = boundedEntry(c, "massFraction", 0, 1, false);
             const scalar M = positiveEntry(dict_, "totalMass");
-            const scalar d = c.get<scalar>("diameter");
+            const dem::ParticleClass pc(readClass(c, name));
+            const scalar d = pc.diameter;
             const scalar m =
-                c.get<scalar>("density")*constant::mathematical::pi*d*d*d/6;
+                pc.distribution.type == dem::DiameterDistributionType::single
+              ? c.get<scalar>("density")*constant::mathematical::pi*d*d*d/6
+              : dem::meanParticleMass(pc);
             counts.push_back(int(std::round(w*M/m)));
         }
         if (counts.back() < 1)
@@ -140,20 +138,38 @@ std::vector<int> Foam::particleEngine::classCounts() const
 
 // Sums by class (count x particle mass), not over the particles: they do not
 // depend on the particles' numbering, which sortByCell changes, so a restart
-// gets the same U0 to the last bit
+// gets the same U0 to the last bit. A class with a diameter distribution sums
+// its particles' masses in the order of their ids, which the numbering does
+// not change either
 Foam::scalarList Foam::particleEngine::classMasses() const
 {
+    const dem::Settings& s = dem_->settings();
     labelList n(classNames_.size(), Zero);
+    std::vector<std::pair<std::int64_t, label>> distributed;
     for (label i = 0; i < size(); ++i)
     {
-        ++n[dem_->classIndex()[i]];
+        const int k = dem_->classIndex()[i];
+        ++n[k];
+        if (s.classes[k].distribution.type != dem::DiameterDistributionType::single)
+        {
+            distributed.emplace_back(dem_->id()[i], i);
+        }
     }
-    const scalarList d(classDiameters());
+    std::sort(distributed.begin(), distributed.end());
     const scalarList rho(classDensities());
-    scalarList m(n.size());
+    scalarList m(n.size(), Zero);
     forAll(m, k)
     {
-        m[k] = n[k]*rho[k]*constant::mathematical::pi*pow3(d[k])/6;
+        if (s.classes[k].distribution.type == dem::DiameterDistributionType::single)
+        {
+            const scalar d = s.classes[k].diameter;
+            m[k] = n[k]*rho[k]*constant::mathematical::pi*pow3(d)/6;
+        }
+    }
+    for (const auto& particle : distributed)
+    {
+        const label i = particle.second;
+        m[dem_->classIndex()[i]] += dem_->mass()[i];
     }
     return m;
 }
@@ -184,20 +200,6 @@ Foam::scalarList Foam::particleEngine::massFractions() const
     const scalar M = sum(w);
     forAll(w, k) w[k] /= max(M, VSMALL);
     return w;
-}
-
-
-Foam::scalarList Foam::particleEngine::diametersOf(const dem::Settings& settings)
-{
-    scalarList d(settings.classes.size());
-    forAll(d, k) d[k] = settings.classes[k].diameter;
-    return d;
-}
-
-
-Foam::scalarList Foam::particleEngine::classDiameters() const
-{
-    return diametersOf(dem_->settings());
 }
 
 

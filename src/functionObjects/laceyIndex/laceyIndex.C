@@ -84,7 +84,9 @@ const Foam::dpmCloud& Foam::functionObjects::laceyIndex::cloud() const
 
 void Foam::functionObjects::laceyIndex::calculate(const dpmCloud& cloud)
 {
-    const scalarList& diameters = cloud.classDiameters();
+    // A class of a diameter distribution counts as particles of its mean
+    // volume: its volume-mean diameter E[d^3]^(1/3)
+    const scalarList& diameters = cloud.classVolumeDiameters();
     if (diameters.size() != 2)
     {
         FatalIOErrorInFunction(dict_)

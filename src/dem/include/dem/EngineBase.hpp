@@ -50,9 +50,14 @@ void checkTimeStep(const Settings& settings);
 /// (relative tolerance 1e-9).
 long subStepCount(double dtOuter, double dt);
 
-/// The class indices, largest diameter first (equal diameters in their order): the order
-/// in which a random packing places them.
+/// The class indices, largest (mean) diameter first (equal diameters in their order): the
+/// order in which a random packing places them.
 std::vector<int> classesLargestFirst(const Settings& settings);
+
+/// The n diameters of class k a random packing of seed `seed` places after the first
+/// drawnBefore of the class's drawClassDiameters (the placed particles'), largest first.
+std::vector<double> restOfClass(const ParticleClass& c, int k, int drawnBefore, int n,
+                                std::uint64_t seed);
 
 /// The arrays of one axis of the particles, for the loops that treat every axis alike.
 struct AxisArrays {
@@ -86,8 +91,9 @@ public:
     const ParticleArrays& particles() const { return p_; }
     const std::vector<Wall>& walls() const { return walls_; }
 
-    /// Derived::packRandom, then settle into an empty box as `recipe` says; the recipe is
-    /// kept and saved with the state. Returns the settling time spent, s.
+    /// The recipe's placed particles (layPlacedParticles), Derived::packRest of the rest,
+    /// then settle into an empty box as `recipe` says; the recipe is kept and saved with the
+    /// state. Returns the settling time spent, s.
     double packBed(const BedRecipe& recipe, const SettleProgress& progress = {});
     /// One DEM step; with fluid = false the fluid inputs are ignored.
     void step(bool fluid);

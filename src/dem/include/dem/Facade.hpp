@@ -4,6 +4,7 @@
 // The DEM library as the OpenFOAM side sees it: plain settings structs and plain
 // particle arrays. Deliberately free of Eigen so that wmake code can include it.
 
+#include "dem/Diameters.hpp"
 #include "dem/Error.hpp"
 
 #include <cstdint>
@@ -18,10 +19,15 @@ namespace dem {
 /// One size class of particles.
 struct ParticleClass {
     std::string name;
-    double diameter;   ///< m
+    double diameter;   ///< m: every particle's (not read with a distribution: meanDiameter)
     double density;    ///< kg/m^3
     double youngsModulus = 0.0;   ///< Pa, > 0 under HertzMindlin (not read by the linear law)
     double poissonRatio = 0.0;    ///< in (-1, 0.5] under HertzMindlin
+    /// The particles' diameters drawn from a distribution when a bed is packed (single: all
+    /// `diameter`). The class's contact laws take the coefficients of its meanDiameter, the
+    /// step bounds its smallestDiameter, the neighbour search its largestDiameter
+    /// (Diameters.hpp; docs/theory/dem.md, "Diameter distributions").
+    DiameterDistribution distribution{};
 };
 
 /// The contact law, chosen once for every contact (model.md): the paper's linear
@@ -122,16 +128,40 @@ struct Settings {
     double slabDepth = 0.0;
 };
 
-/// How a bed was made: packRandom(countPerClass, region, seed), then settle(settleTime,
-/// keTolerance). Saved with the state (Simulation::packBed), so that a case that reuses the
-/// bed can check it was made for its particles (Simulation::loadBed).
+/// A particle of a bed laid before the rest are packed (BedRecipe::placed): at a given
+/// position, or at random on the region's floor.
+struct PlacedParticle {
+    int classIndex = 0;
+    /// Laid at random on the floor: its centre a radius above the region's yMin, x (and z in
+    /// 3D) drawn uniform in the region (and the slab) clear of the walls and of the particles
+    /// placed before it.
+    bool random = false;
+    Vector3 position;                  ///< m, when not random (z read in 3D only)
+};
+
+/// How a bed was made: the placed particles laid first, then packRandom of the rest of
+/// countPerClass in region with seed, then settle(settleTime, keTolerance). Saved with the
+/// state (Simulation::packBed), so that a case that reuses the bed can check it was made for
+/// its particles (Simulation::loadBed).
 struct BedRecipe {
-    std::vector<int> countPerClass;    ///< particles of each class
+    std::vector<int> countPerClass;    ///< particles of each class, the placed ones included
     Box region;                        ///< packing region, m
     std::uint64_t seed = 1;            ///< of the random packing
     double settleTime = 1.0;           ///< longest settling, s
     double keTolerance = 0.0;          ///< settled below this kinetic energy per particle, J
+    /// Laid in this order before the rest, fixed positions and random ones alike; each must
+    /// lie in the region (in 3D in the slab) clear of the walls and of the others, and a
+    /// class's placed particles count toward, and must not exceed, its count. A class with a
+    /// distribution gives its placed particles its first diameters drawn.
+    std::vector<PlacedParticle> placed{};
 };
+
+/// Throws dem::Error naming the placed particle (its number, class, position) and the
+/// allowed range if `recipe`'s placed particles cannot be laid with these settings as
+/// Simulation::packBed lays them: a class outside the classes, more placed particles of a
+/// class than its count, a position outside the region clear of its walls, one overlapping
+/// another placed particle, no room on the floor for a random one.
+void checkPlacements(const Settings& settings, const BedRecipe& recipe);
 
 /// Called while a bed settles: (time spent settling, s; kinetic energy per particle, J).
 using SettleProgress = std::function<void(double, double)>;
@@ -205,11 +235,13 @@ public:
     Simulation& operator=(const Simulation&) = delete;
 
     /// Random, well-mixed, non-overlapping packing of countPerClass[k] particles of class k
-    /// in `region` (inside the box); reproducible for a given seed.
+    /// in `region` (inside the box), clear of the particles already there; reproducible for
+    /// a given seed, the diameters of a class with a distribution drawn from it too
+    /// (drawClassDiameters).
     void packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed);
 
-    /// Packs and settles a bed as `recipe` says (packRandom, then settle) in an empty
-    /// simulation, and keeps the recipe: save() records it with the bed. Returns the time
+    /// Packs and settles a bed as `recipe` says (the placed particles, packRandom of the
+    /// rest, then settle) in an empty simulation, and keeps the recipe: save() records it with the bed. Returns the time
     /// spent settling, s. `progress`, if given, is called as settle() calls it.
     double packBed(const BedRecipe& recipe, const SettleProgress& progress = {});
 

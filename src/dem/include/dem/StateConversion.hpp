@@ -14,8 +14,8 @@ namespace dem {
 inline constexpr const char* stateConverter = "dpmConvertState";
 
 /// The current versions, written by save() and the only ones load() reads.
-inline constexpr std::uint32_t discStateVersion = 7;
-inline constexpr std::uint32_t slabStateVersion = 5;
+inline constexpr std::uint32_t discStateVersion = 8;
+inline constexpr std::uint32_t slabStateVersion = 6;
 /// The oldest versions the converter reads.
 inline constexpr std::uint32_t oldestDiscStateVersion = 2;
 inline constexpr std::uint32_t oldestSlabStateVersion = 1;
@@ -34,10 +34,10 @@ struct StateConversion {
 /// The command line that converts `path` in place, for messages.
 std::string convertCommand(const std::string& path);
 
-/// Reads the state at `in` (2D versions 2-6, slab versions 1-4) and writes it at `out` in
+/// Reads the state at `in` (2D versions 2-7, slab versions 1-5) and writes it at `out` in
 /// the current version of its engine: the same particles, contacts and counters, with what
-/// the older version did not carry set as its load did (2D before 6 and slab before 4: no
-/// run record; no bed recipe, the adaptive skin's clock at the file's step; 2D version 2:
+/// the older version did not carry set as its load did (a bed recipe without placed
+/// particles; 2D before 6 and slab before 4: no run record; no bed recipe, the adaptive skin's clock at the file's step; 2D version 2:
 /// the neighbour list rebuilt on the first step; slab versions 1-2: the skin 0.1 d_min)
 /// and the settings key's contact entries as the earlier versions ran: the contact law of
 /// the run record's contactLaw line (else linear), tangentialDampingRatio 1, no rolling

@@ -24,8 +24,10 @@ struct Difference {
 /// linear, 1 HertzMindlin), tangential damping ratio, rolling friction, the walls' and each
 /// class's Young's modulus and Poisson's ratio, then, if some pair's or class-wall contact's
 /// own coefficient differs from its global entry, the coefficients of every pair of classes
-/// a <= b and of every class on the walls (restitution, friction, rolling friction each), and
-/// the neighbour skin last (nThreads and impactSpeed, which sets the printed step bounds
+/// a <= b and of every class on the walls (restitution, friction, rolling friction each),
+/// then, if some class has a diameter distribution, each class's (its type, the normal's
+/// mean, standard deviation, min and max, the samples' count and checksum; a class's
+/// diameter entry holds its mean diameter then), and the neighbour skin last (nThreads and impactSpeed, which sets the printed step bounds
 /// only, do not count).
 std::vector<double> settingsKey(const Settings& s, double skin);
 
@@ -41,6 +43,12 @@ std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
 /// The entries of two bed recipes that differ, classes named after `s`.
 std::vector<Difference> compareRecipes(const BedRecipe& inFile, const BedRecipe& here,
                                        const Settings& s);
+
+/// A recipe's placed particles as a state file stores them: five values each (class index,
+/// 1 if random else 0, x, y, z).
+std::vector<double> placedRecord(const BedRecipe& recipe);
+/// The placed particles of such a record; false if its length is not a multiple of five.
+bool placedOfRecord(const std::vector<double>& record, std::vector<PlacedParticle>& placed);
 
 /// Counts per class of the particles against those wanted, classes named after `s`.
 std::vector<Difference> compareCounts(const std::vector<int>& inFile, const std::vector<int>& here,

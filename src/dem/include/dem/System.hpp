@@ -54,6 +54,13 @@ public:
 
     void addParticle(int cls, double x, double y, double vx, double vy, double omega);
     void packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed);
+    /// packRandom with each class's diameters after the first drawnBefore[k] of its stream
+    /// (those of the placed particles, which count toward a class: a count may be 0 then).
+    void packRest(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed,
+                  const std::vector<int>& drawnBefore);
+    /// Appends a particle of class cls and diameter d at rest at `position` (packBed's placed
+    /// particles, checked there).
+    void appendAtRest(int cls, double d, const Vector3& position);
 
     double kineticEnergy() const;
     double elasticEnergy() const;
