@@ -31,23 +31,6 @@ Description
 
 using namespace Foam;
 
-static label nPassed = 0, nFailed = 0;
-
-void check
-(
-    const std::string& what, const scalar value, const scalar expected,
-    const scalar relTol
-)
-{
-    const scalar err = mag(value - expected)/max(mag(expected), VSMALL);
-    const bool ok = err <= relTol;
-    (ok ? nPassed : nFailed)++;
-    Info<< (ok ? "PASS " : "FAIL ") << what.c_str() << ": " << value
-        << " expected " << expected << " (relative error " << err
-        << ", tolerance " << relTol << ")" << endl;
-}
-
-
 int main(int argc, char *argv[])
 {
     argList::noParallel();
@@ -61,12 +44,6 @@ int main(int argc, char *argv[])
     checkMixtureClosures();
     checkVoidage(mesh);
 
-    Info<< nl << nPassed << " passed, " << nFailed << " failed" << endl;
-    if (nFailed)
-    {
-        // Not a return value: argList's destructor ends the run with 0
-        FatalErrorInFunction
-            << nFailed << " checks failed" << exit(FatalError);
-    }
+    reportChecks();
     return 0;
 }

@@ -34,25 +34,9 @@ Description
 #include "voidageModel.H"
 #include "Random.H"
 #include "IStringStream.H"
+#include "unitChecks.H"
 
 using namespace Foam;
-
-static label nPassed = 0, nFailed = 0;
-
-void check
-(
-    const std::string& what, const scalar value, const scalar expected,
-    const scalar relTol
-)
-{
-    const scalar err = mag(value - expected)/max(mag(expected), VSMALL);
-    const bool ok = err <= relTol;
-    (ok ? nPassed : nFailed)++;
-    Info<< (ok ? "PASS " : "FAIL ") << what.c_str() << ": " << value
-        << " expected " << expected << " (relative error " << err
-        << ", tolerance " << relTol << ")" << endl;
-}
-
 
 void checkGrid(const fvMesh& mesh, const cartesianGrid& grid)
 {
@@ -303,11 +287,6 @@ int main(int argc, char *argv[])
     checkSphereShares(mesh, grid);
     checkSpheres3D(mesh, grid);
 
-    Info<< nl << nPassed << " passed, " << nFailed << " failed" << endl;
-    if (nFailed)
-    {
-        FatalErrorInFunction
-            << nFailed << " checks failed" << exit(FatalError);
-    }
+    reportChecks();
     return 0;
 }
