@@ -230,6 +230,16 @@ TEST(PlacedBed, ABedPlacedOtherwiseIsRefusedNamingThePlacement)
                   std::string::npos)
             << e;
 
+        BedRecipe moved = r;
+        moved.placed[0].position.x = 0.02;
+        Simulation elsewhere(s);
+        const std::string m = errorOf([&] { elsewhere.loadBed(path, moved); });
+        const std::string there = dimension == 3 ? "(0.02, 0.005, 0.019) m" : "(0.02, 0.005) m";
+        EXPECT_NE(m.find("placed particle 1 = 'large' at " + where + " in the file, 'large' at "
+                         + there + " here"),
+                  std::string::npos)
+            << m;
+
         BedRecipe none = r;
         none.placed.clear();
         Simulation unplaced(s);

@@ -195,8 +195,8 @@ std::vector<dem::PlacedParticle> Foam::packedBed::placed
     {
         FatalIOErrorInFunction(*place)
             << "Entry 'place' of initialBed in " << dict_.name() << ": "
-            << err.what() << " (the packing region: the column's width, from"
-            << " its floor to packHeight = " << r.region.yMax - r.region.yMin
+            << err.what() << "; the packing region is the column's width,"
+            << " from its floor to packHeight = " << r.region.yMax - r.region.yMin
             << " m" << (slab_ ? ", through the slab's depth" : "") << ")"
             << exit(FatalIOError);
     }

@@ -245,8 +245,8 @@ public:
     /// spent settling, s. `progress`, if given, is called as settle() calls it.
     double packBed(const BedRecipe& recipe, const SettleProgress& progress = {});
 
-    /// Adds one particle; throws if outside the box or overlapping another by more than
-    /// 1 % of the smaller diameter.
+    /// Adds one particle of the class's (mean) diameter; throws if outside the box or
+    /// overlapping another by more than 1 % of the smaller diameter.
     void addParticle(int classIndex, double x, double y,
                      double vx = 0, double vy = 0, double omega = 0);
     /// 3D: adds one sphere; throws if it pokes through a wall or overlaps another by more
