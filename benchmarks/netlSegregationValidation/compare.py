@@ -16,7 +16,18 @@ A trend holds when the difference's 95 % interval (Welch) lies above 0.
 The surface is the height below which 99 % of the glass centres lie; 95 %
 and 99.9 % bracket it (their means are printed).
 
-  compare.py <run dir> [-reference <dir>]
+An intruder that has not risen by a seed's end time is censored: its rise
+time is only known to exceed the end time. Where a condition has censored
+seeds, the mean is given as a lower bound (the censored taken at their end
+time, marked >=); criterion 1 then fails if even that bound's interval lies
+above the experiment's and is undecided otherwise; a trend holds if it holds
+with the censored at their end times (that bound is conservative both for
+the slower and for the faster condition) and is undecided otherwise.
+
+  compare.py <run dir> [-reference <dir>] [-figure <png>]
+
+-figure draws each condition's rise times, the seeds' beside the
+experiment's repeats, with the means and their intervals.
 """
 
 import glob
@@ -48,15 +59,24 @@ def experiment(reference, condition):
     return np.loadtxt(path, ndmin=2)
 
 
+def end_time(case):
+    """The run's end time: its controlDict's endTime (s)."""
+    with open(os.path.join(case, "system", "controlDict")) as f:
+        return float(re.search(r"^endTime\s+([^;\s]+)", f.read(), re.M).group(1))
+
+
 def simulated(run, condition):
-    """[seed, k, fraction] rise times of the finished seeds."""
-    rows = []
+    """([seed, k, fraction] rise times of the finished seeds, with the
+    censored at their end time; [seed, k, fraction] censored or not)."""
+    rows, censored = [], []
     for case in sorted(glob.glob(os.path.join(run, condition + "_seed*"))):
         table = os.path.join(case, "postProcessing", "riseTime", "0", "riseOrder.dat")
         if os.path.isfile(table):
             t = np.loadtxt(table, ndmin=2)
-            rows.append(t[:, 1:] if t.shape[1] == len(FRACTIONS) + 1 else t)
-    return np.array(rows)
+            t = t[:, 1:] if t.shape[1] == len(FRACTIONS) + 1 else t
+            censored.append(np.isnan(t))
+            rows.append(np.where(np.isnan(t), end_time(case), t))
+    return np.array(rows), np.array(censored, dtype=bool)
 
 
 def welch_above_zero(a, b):
@@ -70,43 +90,85 @@ def welch_above_zero(a, b):
     return d - h > 0, d, h
 
 
+def draw(drawn, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, len(drawn), figsize=(3.2 * len(drawn), 3.2), squeeze=False)
+    for ax, (c, sim, cens, exp) in zip(axes[0], drawn):
+        for k in range(exp.shape[1]):
+            for x, data, colour, label in ((k - 0.15, exp[:, k], "0.4", "experiment"),
+                                           (k + 0.15, sim[:, k], "C0", "simulated")):
+                ax.plot(np.full(len(data), x), data, "o", ms=3, color=colour, alpha=0.6,
+                        label=label if k == 0 else None)
+            if cens[:, k].any():        # not risen by the end time: at it, open
+                ax.plot(np.full(cens[:, k].sum(), k + 0.15), sim[cens[:, k], k], "^",
+                        ms=5, mfc="white", color="C3",
+                        label="not risen by the end" if k == 0 or not cens[:, :k].any() else None)
+                m, h = interval(data)
+                ax.errorbar(x + 0.08, m, yerr=h if np.isfinite(h) else None, fmt="_",
+                            color=colour, capsize=3)
+        ax.set_xticks(range(exp.shape[1]))
+        ax.set_xticklabels(["%d" % (k + 1) for k in range(exp.shape[1])])
+        ax.set_xlabel("intruder (order of emergence)")
+        ax.set_title(c, fontsize=9)
+    axes[0][0].set_ylabel("rise time, s")
+    axes[0][0].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    print("wrote %s" % path)
+
+
 def main(argv):
     if not argv or argv[0].startswith("-"):
         sys.exit(__doc__)
     run = argv[0]
     reference = argv[argv.index("-reference") + 1] if "-reference" in argv else REFERENCE
+    figure = argv[argv.index("-figure") + 1] if "-figure" in argv else None
     conditions = sorted({re.sub(r"_seed\d+$", "", os.path.basename(c))
                          for c in glob.glob(os.path.join(run, "U*_seed*"))})
     print("| condition | k | seeds | simulated t_r, s | experiment t_r, s | overlap |"
-          " surface 95 % / 99.9 % |")
-    print("| --- | --- | --- | --- | --- | --- | --- |")
+          " surface 95 % / 99.9 % | not risen |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- |")
     first = {}
     passed = []
+    drawn = []
     for c in conditions:
-        sim, exp = simulated(run, c), experiment(reference, c)
+        (sim, cens), exp = simulated(run, c), experiment(reference, c)
         if not len(sim):
             continue
-        first[c] = (sim[:, 0, SURFACE], exp[:, 0])
+        drawn.append((c, sim[:, :, SURFACE], cens[:, :, SURFACE], exp))
+        first[c] = (sim[:, 0, SURFACE], exp[:, 0], cens[:, 0, SURFACE].any())
         for k in range(exp.shape[1]):
             m, h = interval(sim[:, k, SURFACE])
             me, he = interval(exp[:, k])
+            n_cens = int(cens[:, k, SURFACE].sum())
             overlap = bool(abs(m - me) <= h + he) if np.isfinite(h) else None
+            if n_cens and overlap is not None:
+                overlap = False if m - h > me + he else None
             passed.append(overlap)
-            lo, hi = np.nanmean(sim[:, k, 0]), np.nanmean(sim[:, k, 2])
-            print("| %s | %d | %d | %.2f +- %.2f | %.2f +- %.2f | %s | %.2f / %.2f |"
-                  % (c, k + 1, len(sim), m, h, me, he,
-                     {True: "yes", False: "no", None: "-"}[overlap], lo, hi))
+            bounds = ["%s%.2f" % (">=" if cens[:, k, j].any() else "", sim[:, k, j].mean())
+                      for j in (0, 2)]
+            print("| %s | %d | %d | %s%.2f +- %.2f | %.2f +- %.2f | %s | %s / %s | %d |"
+                  % (c, k + 1, len(sim), ">=" if n_cens else "", m, h, me, he,
+                     {True: "yes", False: "no", None: "-"}[overlap], bounds[0], bounds[1],
+                     n_cens))
     print()
     for name, a, b in (("heavier bed rises slower", "U183_M227_1L", "U183_M177_1L"),
                        ("slower gas rises slower", "U183_M177_1L", "U214_M177_4L")):
         if a in first and b in first:
             for which, j in (("simulated", 0), ("experiment", 1)):
                 ok, d, h = welch_above_zero(first[a][j], first[b][j])
+                censored = which == "simulated" and (first[a][2] or first[b][2])
+                verdict = {True: "holds", False: "not shown", None: "too few"}[ok]
+                if censored and ok is False:
+                    ok, verdict = None, "undecided (censored seeds)"
                 print("%s, %s: t_r(1) %s - %s = %.2f +- %.2f s: %s"
-                      % (name, which, a, b, d, h,
-                         {True: "holds", False: "not shown", None: "too few"}[ok]))
+                      % (name, which, a, b, d, h, verdict))
                 if which == "simulated":
                     passed.append(ok)
+    if figure and drawn:
+        draw(drawn, figure)
     decided = [p for p in passed if p is not None]
     print("\ncriteria met: %d of %d decided (%d undecided)"
           % (sum(decided), len(decided), len(passed) - len(decided)))

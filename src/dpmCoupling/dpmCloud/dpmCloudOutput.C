@@ -17,12 +17,18 @@ License
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::dpmCloud::writeParticlesIfDue()
+bool Foam::dpmCloud::particleFileDue() const
 {
     const Time& time = mesh_.time();
     const scalar t = time.value();
     const scalar k = std::round(t/writeInterval_);
-    if (mag(t - k*writeInterval_) < 0.5*time.deltaTValue())
+    return mag(t - k*writeInterval_) < 0.5*time.deltaTValue();
+}
+
+
+void Foam::dpmCloud::writeParticlesIfDue()
+{
+    if (particleFileDue())
     {
         writeParticles();
     }
@@ -42,13 +48,7 @@ void Foam::dpmCloud::writeParticles()
 void Foam::dpmCloud::writeStartParticles(const volVectorField& U)
 {
     const Time& time = mesh_.time();
-    const scalar t = time.value();
-    const scalar k = std::round(t/writeInterval_);
-    if
-    (
-        mag(t - k*writeInterval_) >= 0.5*time.deltaTValue()
-     || writer_->hasGasFields(time.timeName())
-    )
+    if (!particleFileDue() || writer_->hasGasFields(time.timeName()))
     {
         return;
     }
@@ -71,7 +71,7 @@ void Foam::dpmCloud::writeStartParticles(const volVectorField& U)
             x[i], y[i], z ? z[i] : 0, eps, Uc, voidageP[i], gasVelocityP[i]
         );
     }
-    writer_->write(engine_.dem(), voidageP, gasVelocityP, t, time.timeName());
+    writer_->write(engine_.dem(), voidageP, gasVelocityP, time.value(), time.timeName());
 }
 
 
