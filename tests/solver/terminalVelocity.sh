@@ -17,8 +17,10 @@
 # 0.3 % here, far inside the tolerance.
 # In the slab mode (slab3D <depth>) the sphere falls in the slab's
 # mid-plane between the front and back walls, the voidage its sphere-column
-# volume: the same balance.
-#   terminalVelocity.sh <workDir> [A|B] [slab3D <depth>]    (default B, 2D)
+# volume: the same balance. With the gas resolved in depth (spheres3D:<nz>
+# <depth>, nz cells between no-slip walls) the sphere falls on the plane
+# between two cells, the gas it sees interpolated trilinearly from both.
+#   terminalVelocity.sh <workDir> [A|B] [slab3D <depth> | spheres3D:<nz> <depth>]    (default B, 2D)
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 
