@@ -113,6 +113,7 @@ void Foam::functionObjects::intrudersRisen::sample()
     }
     const double surface = surfaceHeight(bedHeights_, fraction_);
 
+    const std::int64_t* id = dem.id();
     label total = 0;
     label atSurface = 0;
     for (std::size_t i = 0; i < n; ++i)
@@ -120,10 +121,19 @@ void Foam::functionObjects::intrudersRisen::sample()
         if (classIndex[i] == cls)
         {
             ++total;
-            atSurface += (double(float(y[i])) >= surface);
+            if (double(float(y[i])) >= surface)
+            {
+                ++atSurface;
+                risen_.insert(label(id[i]));
+            }
         }
     }
-    const bool allRisen = total > 0 && atSurface == total;
+    const label risen = risen_.size();
+    const bool allRisen = total > 0 && risen == total;
+
+    // Kept with each written time (uniform/functionObjects/
+    // functionObjectProperties), so that a restart knows who had risen
+    setProperty("risen", risen_.sortedToc());
 
     if (writeToFile())
     {
@@ -146,7 +156,7 @@ void Foam::functionObjects::intrudersRisen::sample()
             );
             writeHeaderValue(os, "q", fraction_);
             writeCommented(os, "Time");
-            for (const char* column : {"surface", "atSurface", "n"})
+            for (const char* column : {"surface", "atSurface", "risen", "n"})
             {
                 writeTabbed(os, column);
             }
@@ -156,19 +166,20 @@ void Foam::functionObjects::intrudersRisen::sample()
         os  << setw(charWidth()) << time_.timeName()
             << tab << setw(charWidth()) << surface
             << tab << setw(charWidth()) << atSurface
+            << tab << setw(charWidth()) << risen
             << tab << setw(charWidth()) << total << endl;
     }
 
     Log << type() << ' ' << name() << ": t = " << time_.timeName() << ", "
         << atSurface << " of " << total << ' ' << className_
         << " at or above the surface " << surface << " m (q " << fraction_
-        << ')' << endl;
+        << "), " << risen << " risen so far" << endl;
 
     const scalar nextStep = t + time_.deltaTValue();
     if (allRisen && endRun_ && nextStep < time_.endTime().value())
     {
         Info<< type() << ' ' << name() << ": every " << className_
-            << " has risen to the surface (q " << fraction_ << ") at t = "
+            << " has risen to the surface (q " << fraction_ << ") by t = "
             << time_.timeName() << "; ending the run after one more step"
             << endl;
         const_cast<Time&>(time_).setEndTime(nextStep);
@@ -192,9 +203,28 @@ Foam::functionObjects::intrudersRisen::intrudersRisen
     className_(),
     fraction_(0.999),
     endRun_(true),
-    lastSample_(-GREAT)
+    lastSample_(-GREAT),
+    risen_()
 {
     read(dict);
+
+    // Who had risen before a restart, then the start's own particle file
+    labelList risen;
+    if (getProperty("risen", risen))
+    {
+        risen_.insert(risen);
+    }
+    const scalar t = runTime.value();
+    if
+    (
+        !functionObject::postProcess
+     && mesh_.foundObject<dpmCloud>(cloudName_)
+     && t >= dict.lookupOrDefault<scalar>("timeStart", -GREAT)
+     && t <= dict.lookupOrDefault<scalar>("timeEnd", GREAT)
+    )
+    {
+        sample();
+    }
 }
 
 
