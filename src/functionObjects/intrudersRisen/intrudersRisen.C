@@ -12,7 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "intrudersRisen.H"
-#include "dpmCloud.H"
+#include "cloudFunctionObject.H"
 #include "addToRunTimeSelectionTable.H"
 #include "knownEntries.H"
 
@@ -66,16 +66,7 @@ double Foam::functionObjects::intrudersRisen::surfaceHeight
 
 const Foam::dpmCloud& Foam::functionObjects::intrudersRisen::cloud() const
 {
-    const dpmCloud* cloudPtr = mesh_.findObject<dpmCloud>(cloudName_);
-    if (!cloudPtr)
-    {
-        FatalIOErrorInFunction(dict_)
-            << "No particle cloud '" << cloudName_ << "' (entry 'cloud' in "
-            << dict_.name() << ") in the mesh's object registry; the clouds"
-            << " there: " << mesh_.sortedNames<dpmCloud>()
-            << exit(FatalIOError);
-    }
-    return *cloudPtr;
+    return cloudFunctionObject::find(mesh_, cloudName_, dict_);
 }
 
 
@@ -237,12 +228,7 @@ bool Foam::functionObjects::intrudersRisen::read(const dictionary& dict)
     dict_ = dict;
 
     static const wordList known{"cloud", "class", "fraction", "endRun"};
-    static const wordHashSet common
-    {
-        "type", "libs", "functionObjectLibs", "enabled", "log", "region",
-        "subRegion", "timeStart", "timeEnd", "triggerStart", "triggerEnd",
-        "controlMode", "writePrecision", "writeToFile", "useUserTime"
-    };
+    static const wordHashSet common(cloudFunctionObject::commonEntries(false));
     checkKnownEntries
     (
         dict, known, "function object '" + name() + "' (type intrudersRisen)",

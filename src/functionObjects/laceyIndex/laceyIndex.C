@@ -12,7 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "laceyIndex.H"
-#include "dpmCloud.H"
+#include "cloudFunctionObject.H"
 #include "addToRunTimeSelectionTable.H"
 #include "knownEntries.H"
 
@@ -69,16 +69,7 @@ mixing::Region readCorner
 
 const Foam::dpmCloud& Foam::functionObjects::laceyIndex::cloud() const
 {
-    const dpmCloud* cloudPtr = mesh_.findObject<dpmCloud>(cloudName_);
-    if (!cloudPtr)
-    {
-        FatalIOErrorInFunction(dict_)
-            << "No particle cloud '" << cloudName_ << "' (entry 'cloud' in "
-            << dict_.name() << ") in the mesh's object registry; the clouds"
-            << " there: " << mesh_.sortedNames<dpmCloud>()
-            << exit(FatalIOError);
-    }
-    return *cloudPtr;
+    return cloudFunctionObject::find(mesh_, cloudName_, dict_);
 }
 
 
@@ -270,15 +261,7 @@ bool Foam::functionObjects::laceyIndex::read(const dictionary& dict)
     // Its own entries, and those every function object may have (v1912's
     // functionObject, timeControl, regionFunctionObject, writeFile)
     static const wordList known{"cloud", "cellSize", "box", "varianceBasis"};
-    static const wordHashSet common
-    {
-        "type", "libs", "functionObjectLibs", "enabled", "log", "region",
-        "subRegion", "timeStart", "timeEnd", "triggerStart", "triggerEnd",
-        "controlMode", "deltaTCoeff", "nStepsToStartTimeChange",
-        "executeControl", "executeInterval", "writeControl", "writeInterval",
-        "outputControl", "outputInterval", "writePrecision", "writeToFile",
-        "useUserTime"
-    };
+    static const wordHashSet common(cloudFunctionObject::commonEntries(true));
     checkKnownEntries
     (
         dict, known, "function object '" + name() + "' (type laceyIndex)",
