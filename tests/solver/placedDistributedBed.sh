@@ -8,7 +8,8 @@
 # (9.43 mm, 941 kg/m3) laid first, one at the centre of the floor and one at
 # random. The bed as packed (settleTime 0, particles/0.h5):
 #   - the glass count is massFraction totalMass over rho pi/6 E[d^3], E[d^3] of
-#     the truncated normal by quadrature here; the log's Sauter mean likewise;
+#     the truncated normal by quadrature here; the log's Sauter mean and the
+#     class summary's number mean likewise;
 #   - the glass diameters lie within the bounds, their mean within 3 standard
 #     errors of the truncated normal's (quadrature); the sampled class's are
 #     the file's values alone;
@@ -81,6 +82,9 @@ log = open(case + "/log.dpmFoam2D").read()
 sauter = float(log.split("class glass diameters")[1].split("Sauter mean ")[1].split()[0])
 if abs(sauter / (m[3] / m[2]) - 1) > 1e-6:
     bad.append("Sauter mean %.8g in the log, %.8g expected" % (sauter, m[3] / m[2]))
+number = float(log.split("    glass: ")[1].split(" d = ")[1].split()[0]) * 1e-3
+if abs(number / m[1] - 1) > 1e-6 or "(the number mean of its distribution)" not in log:
+    bad.append("the class summary's d %.8g m is not the number mean %.8g m" % (number, m[1]))
 r = 0.5 * 9.43e-3
 if len(large) != 2:
     bad.append("%d intruders" % len(large))

@@ -139,9 +139,19 @@ void Foam::dpmCloud::report(Ostream& os) const
     os  << "Particles (" << dict_.name() << "):" << nl;
     forAll(classNames_, k)
     {
-        os  << "    " << classNames_[k] << ": " << counts[k]
-            << " particles, d = " << s.classes[k].diameter*1e3 << " mm, rho = "
-            << s.classes[k].density << " kg/m3, mass fraction " << w[k] << nl;
+        const dem::ParticleClass& c = s.classes[k];
+        os  << "    " << classNames_[k] << ": " << counts[k] << " particles, d = ";
+        if (c.distribution.type == dem::DiameterDistributionType::single)
+        {
+            os  << c.diameter*1e3 << " mm";
+        }
+        else
+        {
+            // Its means and spread are in the line "Particles: class ..."
+            os  << dem::meanDiameter(c)*1e3 << " mm (the number mean of its"
+                << " distribution)";
+        }
+        os  << ", rho = " << c.density << " kg/m3, mass fraction " << w[k] << nl;
     }
     reportContact(os);
     os  << "    total mass " << engine_.totalMass() << " kg" << nl
