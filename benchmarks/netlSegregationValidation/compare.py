@@ -106,7 +106,7 @@ def draw(drawn, path):
                         ms=5, mfc="white", color="C3",
                         label="not risen by the end" if k == 0 or not cens[:, :k].any() else None)
                 m, h = interval(data)
-                ax.errorbar(x + 0.08, m, yerr=h if np.isfinite(h) else None, fmt="_",
+                ax.errorbar(x + 0.1, m, yerr=h if np.isfinite(h) else None, fmt="D", ms=4, lw=1.5,
                             color=colour, capsize=3)
         ax.set_xticks(range(exp.shape[1]))
         ax.set_xticklabels(["%d" % (k + 1) for k in range(exp.shape[1])])
