@@ -101,13 +101,13 @@ def draw(drawn, path):
                                            (k + 0.15, sim[:, k], "C0", "simulated")):
                 ax.plot(np.full(len(data), x), data, "o", ms=3, color=colour, alpha=0.6,
                         label=label if k == 0 else None)
-            if cens[:, k].any():        # not risen by the end time: at it, open
-                ax.plot(np.full(cens[:, k].sum(), k + 0.15), sim[cens[:, k], k], "^",
-                        ms=5, mfc="white", color="C3",
-                        label="not risen by the end" if k == 0 or not cens[:, :k].any() else None)
                 m, h = interval(data)
                 ax.errorbar(x + 0.1, m, yerr=h if np.isfinite(h) else None, fmt="D", ms=4, lw=1.5,
                             color=colour, capsize=3)
+            if cens[:, k].any():        # not risen by the end time: at it, open
+                ax.plot(np.full(cens[:, k].sum(), k + 0.15), sim[cens[:, k], k], "^",
+                        ms=5, mfc="white", color="C3",
+                        label="not risen by the end" if not cens[:, :k].any() else None)
         ax.set_xticks(range(exp.shape[1]))
         ax.set_xticklabels(["%d" % (k + 1) for k in range(exp.shape[1])])
         ax.set_xlabel("intruder (order of emergence)")

@@ -11,15 +11,12 @@ in colour, with the bed's surface (99 % of the glass centres below it).
 """
 
 import argparse
-import os
 import sys
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "python"))
-from dpmfoam2d import particles as pio      # noqa: E402
-from dpmfoam2d import rise_time             # noqa: E402
+from dpmfoam2d import particles as pio
+from dpmfoam2d import rise_time
 
 
 def main(argv=None):
