@@ -52,13 +52,14 @@ EngineBase<Derived, Traits>::EngineBase(const Settings& settings, std::vector<Wa
       nClasses_(static_cast<int>(settings.classes.size())),
       smallestDiameter_(smallestDiameter(settings)),
       largestDiameter_(largestDiameter(settings)),
+      cellDiameter_(largestDiameter_),
       skin_(resolvedSkin(settings, startFraction)),
       adaptiveSkin_(adaptive),
       skinMin_(adaptive ? skinMinFraction * smallestDiameter_ : skin_),
       skinMax_(adaptive ? skinMaxFraction * smallestDiameter_ : skin_),
       walls_(std::move(walls)),
       search_(settings.box.xMin, settings.box.xMax, settings.box.yMin, settings.box.yMax,
-              largestDiameter_ + skin_)
+              cellDiameter_ + skin_)
 {
     streamingLoops();   // a bad $DEM_SIMD is an error here, not at the first step
     constexpr double pi = 3.14159265358979323846;

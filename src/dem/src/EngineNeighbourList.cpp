@@ -3,6 +3,7 @@
 // The neighbour list of the 2D and slab engines (EngineBase.hpp): its rebuild by NBS with
 // the contacts' history carried over, the pairs' groups for the threads, and the skin.
 
+#include "dem/Diameters.hpp"
 #include "dem/EngineBase.hpp"
 #include "dem/SlabSystem.hpp"
 #include "dem/System.hpp"
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 #include <omp.h>
 
@@ -60,6 +62,11 @@ void EngineBase<Derived, Traits>::rebuildNeighbourList()
         }
     }
 
+    const double cellDiameter = searchCellDiameter();
+    if (cellDiameter != cellDiameter_) {
+        cellDiameter_ = cellDiameter;
+        search_.setMinCellSize(cellDiameter_ + skin_);
+    }
     Traits::findPairs(search_, p_, skin_, found_, nThreads);
 
     // Stable counting sort of the found pairs into their groups, in parallel over chunks
@@ -190,7 +197,33 @@ template <class Derived, class Traits>
 void EngineBase<Derived, Traits>::setSkin(double skin)
 {
     skin_ = skin;
-    search_.setMinCellSize(largestDiameter_ + skin);
+    search_.setMinCellSize(cellDiameter_ + skin);
+}
+
+template <class Derived, class Traits>
+double EngineBase<Derived, Traits>::searchCellDiameter() const
+{
+    const std::vector<ParticleClass>& cls = settings_.classes;
+    std::vector<std::size_t> count(cls.size(), 0);
+    for (const int k : p_.classIndex) ++count[k];
+    std::vector<int> order(cls.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+        return dem::largestDiameter(cls[a]) > dem::largestDiameter(cls[b]);
+    });
+    // The deepest cut in the classes by size, below at most the allowed number of particles,
+    // at which the size falls by more than largeRatio.
+    const std::size_t allowed = std::min<std::size_t>(
+        maxLarge, static_cast<std::size_t>(largeFraction * static_cast<double>(p_.size())));
+    double d = largestDiameter_;
+    std::size_t above = 0;
+    for (std::size_t k = 0; k + 1 < order.size(); ++k) {
+        above += count[order[k]];
+        if (above > allowed) break;
+        const double next = dem::largestDiameter(cls[order[k + 1]]);
+        if (dem::largestDiameter(cls[order[k]]) > largeRatio * next) d = next;
+    }
+    return d;
 }
 
 template <class Derived, class Traits>
@@ -208,6 +241,7 @@ std::size_t EngineBase<Derived, Traits>::listMemoryBytes() const
     template void EngineBase<Derived, Traits>::rebuildNeighbourList();               \
     template void EngineBase<Derived, Traits>::adaptSkin(double);                    \
     template void EngineBase<Derived, Traits>::setSkin(double);                      \
+    template double EngineBase<Derived, Traits>::searchCellDiameter() const;         \
     template std::size_t EngineBase<Derived, Traits>::listMemoryBytes() const;
 
 DEM_NEIGHBOUR_LIST_MEMBERS(System, DiscTraits)

@@ -20,13 +20,14 @@ CellMapper::CellMapper(double xMin, double xMax, double yMin, double yMax, doubl
 }
 
 NbsSearch::NbsSearch(double xMin, double xMax, double yMin, double yMax, double minCellSize)
-    : xMin_(xMin), xMax_(xMax), yMin_(yMin), yMax_(yMax),
+    : xMin_(xMin), xMax_(xMax), yMin_(yMin), yMax_(yMax), minCellSize_(minCellSize),
       mapper_(xMin, xMax, yMin, yMax, minCellSize)
 {
 }
 
 void NbsSearch::setMinCellSize(double minCellSize)
 {
+    minCellSize_ = minCellSize;
     mapper_ = CellMapper(xMin_, xMax_, yMin_, yMax_, minCellSize);
 }
 
@@ -110,20 +111,34 @@ void NbsSearch::find(const double* x, const double* y, const double* z, const do
     const int nColumns = mapper_.nColumns();
     const std::size_t nCells = static_cast<std::size_t>(nRows) * nColumns;
 
+    // The particles too large for a cell: any pair of two in cells is then within reach of
+    // the stencil, r_i + r_j + margin <= minCellSize.
+    largeId_.clear();
+    isLarge_.assign(n, 0);
+    for (std::size_t k = 0; k < n; ++k) {
+        if (2.0 * r[k] + margin > minCellSize_) {
+            largeId_.push_back(static_cast<int>(k));
+            isLarge_[k] = 1;
+        }
+    }
+    const std::size_t nInCells = n - largeId_.size();
+
     // Counting sort by cell (stable: a cell's particles in increasing index).
     cellStart_.assign(nCells + 1, 0);
     cellOf_.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
+        if (isLarge_[k]) continue;
         cellOf_[k] = mapper_.cell(x[k], y[k]);
         ++cellStart_[cellOf_[k] + 1];
     }
     for (std::size_t c = 0; c < nCells; ++c) cellStart_[c + 1] += cellStart_[c];
-    id_.resize(n);
-    x_.resize(n);
-    y_.resize(n);
-    r_.resize(n);
-    z_.resize(Is3D ? n : 0);
+    id_.resize(nInCells);
+    x_.resize(nInCells);
+    y_.resize(nInCells);
+    r_.resize(nInCells);
+    z_.resize(Is3D ? nInCells : 0);
     for (std::size_t k = 0; k < n; ++k) {
+        if (isLarge_[k]) continue;
         const int q = cellStart_[cellOf_[k]]++;
         id_[q] = static_cast<int>(k);
         x_[q] = x[k];
@@ -142,7 +157,7 @@ void NbsSearch::find(const double* x, const double* y, const double* z, const do
     bandStart[0] = 0;
     for (int row = 0, b = 1; row < nRows && b < nBands; ++row) {
         const auto seen = static_cast<std::size_t>(cellStart_[(row + 1) * nColumns]);
-        while (b < nBands && seen * nBands >= static_cast<std::size_t>(b) * n) bandStart[b++] = row + 1;
+        while (b < nBands && seen * nBands >= static_cast<std::size_t>(b) * nInCells) bandStart[b++] = row + 1;
     }
 
 #pragma omp parallel for num_threads(nBands) schedule(static, 1)
@@ -150,11 +165,36 @@ void NbsSearch::find(const double* x, const double* y, const double* z, const do
 
     pairs.clear();
     for (const auto& band : bandPairs_) pairs.insert(pairs.end(), band.begin(), band.end());
+    addLargePairs<Is3D>(x, y, z, r, n, margin, pairs);
+}
+
+template <bool Is3D>
+void NbsSearch::addLargePairs(const double* x, const double* y, const double* z, const double* r,
+                              std::size_t n, double margin, std::vector<IndexPair>& pairs) const
+{
+    for (const int a : largeId_) {
+        const double ra = r[a] + margin;
+        for (std::size_t k = 0; k < n; ++k) {
+            const int b = static_cast<int>(k);
+            if (b == a || (isLarge_[k] && b < a)) continue;   // a pair of two large ones once
+            const double dx = x[b] - x[a];
+            const double dy = y[b] - y[a];
+            const double reach = ra + r[b];
+            double d2 = dx * dx + dy * dy;
+            if constexpr (Is3D) {
+                const double dz = z[b] - z[a];
+                d2 += dz * dz;
+            }
+            if (d2 < reach * reach) pairs.push_back(IndexPair{std::min(a, b), std::max(a, b)});
+        }
+    }
 }
 
 std::size_t NbsSearch::memoryBytes() const
 {
-    std::size_t bytes = sizeof(int) * (cellStart_.capacity() + cellOf_.capacity() + id_.capacity())
+    std::size_t bytes = sizeof(int) * (cellStart_.capacity() + cellOf_.capacity() + id_.capacity()
+                                       + largeId_.capacity())
+                        + isLarge_.capacity()
                         + sizeof(double) * (x_.capacity() + y_.capacity() + z_.capacity()
                                             + r_.capacity());
     for (const auto& band : bandPairs_) bytes += sizeof(IndexPair) * band.capacity();

@@ -113,3 +113,41 @@ TEST(Nbs, CellsAreAboutOneLargestDiameter)
     EXPECT_LT(nbs.mapper().cellWidth(), 1.1 * 2.65e-3);
     EXPECT_GE(nbs.mapper().cellHeight(), 2.65e-3);
 }
+
+TEST(Nbs, ParticlesTooLargeForTheCellsAreTestedAgainstAll)
+{
+    // Beads of 3.1 mm with cells sized by them and eight intruders of 9.4 mm, three of them
+    // overlapping one another, one on a wall, one in a corner: the pairs of the oracle, in
+    // the same order for any thread count.
+    const double w = 0.038, h = 0.05, rBead = 1.55e-3, rLarge = 4.7e-3;
+    for (double margin : {0.0, 3e-4}) {
+        NbsSearch nbs(0.0, w, 0.0, h, 2.0 * rBead + margin);
+        Random random(11);
+        Config c;
+        for (int k = 0; k < 400; ++k) {
+            c.x.push_back(random.uniform(rBead, w - rBead));
+            c.y.push_back(random.uniform(rBead, h - rBead));
+            c.r.push_back(rBead);
+        }
+        const double large[8][2] = {{0.010, 0.020}, {0.018, 0.021}, {0.014, 0.027}, {0.030, 0.010},
+                                    {0.99 * rLarge, 0.04}, {0.0, 0.0}, {0.025, 0.045}, {0.033, 0.030}};
+        for (int k = 0; k < 8; ++k) {
+            const auto at = c.x.begin() + 50 * k;   // among the beads' indices
+            c.y.insert(c.y.begin() + 50 * k, large[k][1]);
+            c.r.insert(c.r.begin() + 50 * k, rLarge);
+            c.x.insert(at, large[k][0]);
+        }
+        std::vector<IndexPair> fast, slow, two;
+        nbs.findPairs(c.x.data(), c.y.data(), c.r.data(), c.x.size(), margin, fast);
+        bruteForcePairs(c.x.data(), c.y.data(), c.r.data(), c.x.size(), margin, slow);
+        int largeLarge = 0;
+        for (const auto& p : slow) largeLarge += c.r[p.i] == rLarge && c.r[p.j] == rLarge;
+        ASSERT_GE(largeLarge, 3);
+        EXPECT_EQ(sorted(fast), sorted(slow)) << "margin " << margin;
+        nbs.findPairs(c.x.data(), c.y.data(), c.r.data(), c.x.size(), margin, two, 2);
+        ASSERT_EQ(two.size(), fast.size());
+        for (std::size_t k = 0; k < two.size(); ++k) {
+            ASSERT_TRUE(two[k].i == fast[k].i && two[k].j == fast[k].j) << "entry " << k;
+        }
+    }
+}

@@ -103,6 +103,42 @@ TEST(SlabNbs, SystemListHoldsEveryPairWithinTheSkin)
     EXPECT_EQ(sorted(listed), sorted(slow));
 }
 
+TEST(SlabNbs, IntrudersLeftOutOfTheCellsKeepEveryPair)
+{
+    // NETL's bed in small: beads and a few intruders four times larger, which the search
+    // tests against every particle while its cells follow the beads; a mixture with many
+    // large ones keeps cells of the largest. Either way the list is the oracle's.
+    for (const int nLarge : {5, 40}) {
+        Settings s = slabBedSettings(0.03, 0.06, 0.012, 1);
+        s.classes[1].diameter = 6e-3;
+        SlabSystem sim(s);
+        sim.packRandom({1000, nLarge}, {0.0, 0.03, 0.0, 0.06}, 5);
+        SlabParticles& p = sim.particles();
+        // Two intruders pressed together and one against the front wall, in reach of each
+        // other and of the wall
+        std::vector<std::size_t> large;
+        for (std::size_t k = 0; k < p.size(); ++k) {
+            if (p.radius[k] == 3e-3) large.push_back(k);
+        }
+        ASSERT_EQ(large.size(), std::size_t(nLarge));
+        const std::size_t a = large[1], b = large[0];
+        p.x[a] = 0.012; p.y[a] = 0.030; p.z[a] = 0.006;
+        p.x[b] = 0.017; p.y[b] = 0.031; p.z[b] = 0.0062;
+        sim.rebuildNeighbourList();
+        EXPECT_EQ(sim.searchCellDiameter(), nLarge == 5 ? s.classes[0].diameter : 6e-3);
+        std::vector<IndexPair> slow;
+        bruteForcePairs(p.x.data(), p.y.data(), p.z.data(), p.radius.data(), p.size(), sim.neighbourSkin(), slow);
+        std::vector<IndexPair> listed;
+        for (std::size_t k = 0; k < sim.pairList().size(); ++k) {
+            listed.push_back({sim.pairList().i[k], sim.pairList().j[k]});
+        }
+        bool pressed = false;
+        for (const auto& q : slow) pressed |= std::size_t(q.i) == b && std::size_t(q.j) == a;
+        ASSERT_TRUE(pressed);
+        EXPECT_EQ(sorted(listed), sorted(slow)) << nLarge << " large";
+    }
+}
+
 namespace {
 
 /// A binary slab bed packed and settled; reused by the tests below.

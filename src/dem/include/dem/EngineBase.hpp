@@ -116,6 +116,16 @@ public:
     std::int64_t neighbourListBuilds() const { return listBuilds_; }
     /// The Verlet skin of the current neighbour list, m.
     double neighbourSkin() const { return skin_; }
+    /// The diameter the search's cells are sized by (with the skin): the largest, unless the
+    /// largest particles are few (at most largeFraction of all and maxLarge) and more than
+    /// largeRatio times any other: the search then tests those against every particle and
+    /// sizes the cells by the rest (an intruder in a bed of beads, whose cells would
+    /// otherwise hold tens of beads each).
+    /// Computed from the particles at each list build.
+    double searchCellDiameter() const;
+    static constexpr double largeRatio = 1.5;
+    static constexpr double largeFraction = 0.01;
+    static constexpr int maxLarge = 64;   // their n tests each stay below the grid's cost
     /// How the particles were made (packBed, or the file they came from); none otherwise.
     const BedRecipe* recipe() const { return recipe_ ? &*recipe_ : nullptr; }
     /// The caller's record of the run (its models), saved with the state; load() sets the file's.
@@ -174,6 +184,7 @@ protected:
     Settings settings_;
     int nClasses_;
     double smallestDiameter_, largestDiameter_;
+    double cellDiameter_;                // searchCellDiameter() at the last build
     double skin_;
     bool adaptiveSkin_;
     double skinMin_, skinMax_;           // bounds of the adaptive skin, m

@@ -3,7 +3,9 @@
 #pragma once
 // Contact detection on a grid of cells (after NBS, Munjiza & Andrews 1998): the particles
 // counting-sorted by cell into contiguous arrays, each tested only against its own and the
-// neighbouring cells, which lie in two contiguous ranges of the sorted arrays.
+// neighbouring cells, which lie in two contiguous ranges of the sorted arrays. A particle
+// too large for the cells is left out of the grid and tested against every particle: a few
+// large intruders in a bed of small beads then need no cells sized by them.
 
 #include "dem/CellMapper.hpp"
 
@@ -28,11 +30,14 @@ public:
     void setMinCellSize(double minCellSize);
 
     /// All pairs with |x_j - x_i| < r_i + r_j + margin, i < j, in a fixed order (the walk's),
-    /// replacing the contents of `pairs`. Requires 2 r_max + margin <= cell size.
+    /// replacing the contents of `pairs`.
     /// Rows are walked by up to nThreads threads in bands and the bands' pairs joined in
     /// row order: the same pairs in the same order for any thread count.
     /// The walk: cell by cell, each particle of a cell (in particle order) against the later
     /// ones of its cell and those of the east cell, then of the three cells of the row below.
+    /// A particle with 2 r + margin > minCellSize is in no cell: after the walk, each such
+    /// particle in index order is tested against all the others in index order (those of
+    /// them in no cell only once), n tests each.
     void findPairs(const double* x, const double* y, const double* r, std::size_t n,
                    double margin, std::vector<IndexPair>& pairs, int nThreads = 1);
 
@@ -55,8 +60,15 @@ private:
     void find(const double* x, const double* y, const double* z, const double* r, std::size_t n,
               double margin, std::vector<IndexPair>& pairs, int nThreads);
 
-    double xMin_, xMax_, yMin_, yMax_;
+    /// Appends the pairs of the particles in no cell (largeId_).
+    template <bool Is3D>
+    void addLargePairs(const double* x, const double* y, const double* z, const double* r,
+                       std::size_t n, double margin, std::vector<IndexPair>& pairs) const;
+
+    double xMin_, xMax_, yMin_, yMax_, minCellSize_;
     CellMapper mapper_;
+    std::vector<int> largeId_;      // the particles in no cell, ascending
+    std::vector<char> isLarge_;     // by particle index
     // The particles sorted by cell: cell c's are cellStart_[c] .. cellStart_[c + 1]
     std::vector<int> cellStart_, cellOf_, id_;
     std::vector<double> x_, y_, z_, r_;
