@@ -87,7 +87,7 @@ def welch_above_zero(a, b):
     va, vb = a.var(ddof=1) / len(a), b.var(ddof=1) / len(b)
     dof = (va + vb)**2 / (va**2 / (len(a) - 1) + vb**2 / (len(b) - 1))
     d, h = a.mean() - b.mean(), stats.t.ppf(0.975, dof) * np.sqrt(va + vb)
-    return d - h > 0, d, h
+    return bool(d - h > 0), d, h      # a bool, not numpy's: the verdicts test `is False`
 
 
 def draw(drawn, path):
