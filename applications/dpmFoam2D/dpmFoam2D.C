@@ -160,6 +160,7 @@ int main(int argc, char *argv[])
     }
 
     timers.summary();
+    particles.reportThreads(Info);
 
     Info<< "End\n" << endl;
 

@@ -34,10 +34,12 @@ void cfdStep(dem::Simulation& sim, long cfdStepIndex)
     sim.advance(dtCfd);
 }
 
-std::unique_ptr<dem::Simulation> fluidizedBed(int threads)
+std::unique_ptr<dem::Simulation> fluidizedBed(int threads, bool measured)
 {
+    dem::Settings settings = demBench::bedSettings(threads);
+    settings.measureThreads = measured;
     const std::string path = demBench::settledStatePath() + ".fluidized";
-    return demBench::cached(path, demBench::bedSettings(threads), [] {
+    return demBench::cached(path, settings, [] {
         auto fresh = demBench::settledBed(2);
         const long steps = std::lround(warmUp / dtCfd);
         for (long k = 0; k < steps; ++k) cfdStep(*fresh, k);
@@ -45,12 +47,13 @@ std::unique_ptr<dem::Simulation> fluidizedBed(int threads)
     });
 }
 
-/// Argument: threads. 500 CFD steps (0.05 s) from the cached fluidized state; the
+/// Arguments: threads, and whether one thread or all is measured per CFD step
+/// (Settings::measureThreads). 500 CFD steps (0.05 s) from the cached fluidized state; the
 /// renumbering and the inputs (the solver's coupling) are not timed.
 void BM_FluidizedBed(benchmark::State& state)
 {
     const int threads = static_cast<int>(state.range(0));
-    auto sim = fluidizedBed(threads);
+    auto sim = fluidizedBed(threads, state.range(1) != 0);
     const std::size_t n = sim->size();
     const std::int64_t builds0 = sim->neighbourListBuilds();
     const std::int64_t steps0 = sim->stepCount();
@@ -73,8 +76,8 @@ void BM_FluidizedBed(benchmark::State& state)
 } // namespace
 
 BENCHMARK(BM_FluidizedBed)
-    ->ArgNames({"threads"})
-    ->Arg(1)->Arg(2)
+    ->ArgNames({"threads", "measured"})
+    ->Args({1, 0})->Args({2, 0})->Args({2, 1})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(500)
     ->UseRealTime();

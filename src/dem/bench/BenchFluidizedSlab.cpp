@@ -24,10 +24,12 @@ constexpr double warmUp = 0.3;        // s of forcing from the settled slab
 constexpr double bedTop = 0.025;      // m, H of the forcing
 constexpr double lift = 0.75;         // of the weight, held by the drag on average
 
-std::unique_ptr<dem::Simulation> fluidizedSlab(int threads)
+std::unique_ptr<dem::Simulation> fluidizedSlab(int threads, bool measured)
 {
+    dem::Settings settings = demBench::slabSettings(threads);
+    settings.measureThreads = measured;
     const std::string path = demBench::settledSlabPath() + ".fluidized";
-    return demBench::cached(path, demBench::slabSettings(threads), [] {
+    return demBench::cached(path, settings, [] {
         // From the settled slab, made as BM_SlabBed does.
         auto fresh = demBench::cached(demBench::settledSlabPath(), demBench::slabSettings(2), [] {
             auto slab = std::make_unique<dem::Simulation>(demBench::slabSettings(1));
@@ -45,12 +47,13 @@ std::unique_ptr<dem::Simulation> fluidizedSlab(int threads)
     });
 }
 
-/// Argument: threads. 500 CFD steps (0.05 s) from the cached fluidized state; the
+/// Arguments: threads, and whether one thread or all is measured per CFD step
+/// (Settings::measureThreads). 500 CFD steps (0.05 s) from the cached fluidized state; the
 /// renumbering and the inputs (the solver's coupling) are not timed.
 void BM_FluidizedSlab(benchmark::State& state)
 {
     const int threads = static_cast<int>(state.range(0));
-    auto sim = fluidizedSlab(threads);
+    auto sim = fluidizedSlab(threads, state.range(1) != 0);
     const std::size_t n = sim->size();
     const std::int64_t builds0 = sim->neighbourListBuilds();
     const std::int64_t steps0 = sim->stepCount();
@@ -82,8 +85,8 @@ void BM_FluidizedSlab(benchmark::State& state)
 } // namespace
 
 BENCHMARK(BM_FluidizedSlab)
-    ->ArgNames({"threads"})
-    ->Arg(1)->Arg(2)
+    ->ArgNames({"threads", "measured"})
+    ->Args({1, 0})->Args({2, 0})->Args({2, 1})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(500)
     ->UseRealTime();

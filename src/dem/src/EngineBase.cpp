@@ -13,6 +13,7 @@
 #include "StreamingLoops.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 
@@ -49,6 +50,8 @@ template <class Derived, class Traits>
 EngineBase<Derived, Traits>::EngineBase(const Settings& settings, std::vector<Wall> walls,
                                         double startFraction, bool adaptive)
     : settings_(settings),
+      threads_(settings.nThreads),
+      threadChooser_(settings.nThreads),
       nClasses_(static_cast<int>(settings.classes.size())),
       smallestDiameter_(smallestDiameter(settings)),
       largestDiameter_(largestDiameter(settings)),
@@ -190,7 +193,7 @@ void EngineBase<Derived, Traits>::forEachShare(const Body& body)
 {
     // The kick loops' shares (threadShare): each thread keeps its particles in its cache
     const Index n = static_cast<Index>(p_.size());
-#pragma omp parallel num_threads(settings_.nThreads)
+#pragma omp parallel num_threads(threads_)
     {
         const auto [first, last] = threadShare(n);
         body(first, last);
@@ -214,6 +217,9 @@ template <class Derived, class Traits>
 void EngineBase<Derived, Traits>::advance(double dtOuter)
 {
     const long nSub = subStepCount(dtOuter, settings_.dt);
+    const bool measured = settings_.measureThreads && settings_.nThreads > 1;
+    if (measured) threads_ = threadChooser_.next();
+    const auto start = std::chrono::steady_clock::now();
     ensureReady();
     setFluidForceAtCurrentVelocity(true);
 
@@ -238,6 +244,10 @@ void EngineBase<Derived, Traits>::advance(double dtOuter)
             }
         }
     });
+    if (measured) {
+        const std::chrono::duration<double> spent = std::chrono::steady_clock::now() - start;
+        threadChooser_.record(spent.count());
+    }
 }
 
 template <class Derived, class Traits>

@@ -31,7 +31,7 @@ void EngineBase<Derived, Traits>::rebuildNeighbourList()
     const std::size_t n = p_.size();
     const int ni = static_cast<int>(n);
 
-    const int nThreads = settings_.nThreads;
+    const int nThreads = threads_;
     const Index npOld = static_cast<Index>(pairs_.size());
 
     // Old history by particle i (only non-zero entries matter: a zero is a fresh contact).

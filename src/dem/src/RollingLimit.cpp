@@ -30,7 +30,7 @@ template <class Law> void System::limitRollingTorques()
     const int* wStart = wallContacts_.start.data();
     double* share = rollingScale_.data();
     const double dt = settings_.dt;
-#pragma omp parallel num_threads(settings_.nThreads)
+#pragma omp parallel num_threads(threads_)
     {
         const auto [first, last] = threadShare(n);
         for (Index i = first; i < last; ++i) {
@@ -68,7 +68,7 @@ template <class Law> void System::limitRollingTorques()
     };
     std::size_t unusedCount = 0;
     double unusedOverlap = 0.0;
-    sumPairGroups(settings_.nThreads, p_.size(), [](std::size_t, std::size_t) {}, group,
+    sumPairGroups(threads_, p_.size(), [](std::size_t, std::size_t) {}, group,
                   unusedCount, unusedOverlap);
 }
 
@@ -79,7 +79,7 @@ template <class Law> void SlabSystem::limitRollingTorques()
     double* share = rollingScale_.data();
     const double dt = settings_.dt;
     SlabParticles& p = p_;
-#pragma omp parallel num_threads(settings_.nThreads)
+#pragma omp parallel num_threads(threads_)
     {
         const auto [first, last] = threadShare(n);
         for (Index i = first; i < last; ++i) {
@@ -119,7 +119,7 @@ template <class Law> void SlabSystem::limitRollingTorques()
     };
     std::size_t unusedCount = 0;
     double unusedOverlap = 0.0;
-    sumPairGroups(settings_.nThreads, p.size(), [](std::size_t, std::size_t) {}, group,
+    sumPairGroups(threads_, p.size(), [](std::size_t, std::size_t) {}, group,
                   unusedCount, unusedOverlap);
 }
 

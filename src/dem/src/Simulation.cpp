@@ -142,6 +142,8 @@ double Simulation::elasticEnergy() const { return DEM_ON_ENGINE(elasticEnergy())
 double Simulation::maxOverlap() const { return DEM_ON_ENGINE(maxOverlap()); }
 std::int64_t Simulation::neighbourListBuilds() const { return DEM_ON_ENGINE(neighbourListBuilds()); }
 double Simulation::neighbourSkin() const { return DEM_ON_ENGINE(neighbourSkin()); }
+std::int64_t Simulation::stepsOnOneThread() const { return DEM_ON_ENGINE(threadChooser().callsOnOne()); }
+std::int64_t Simulation::stepsOnAllThreads() const { return DEM_ON_ENGINE(threadChooser().callsOnAll()); }
 std::size_t Simulation::memoryBytes() const { return DEM_ON_ENGINE(memoryBytes()); }
 
 void Simulation::save(const std::string& path) const { DEM_ON_ENGINE(save(path)); }

@@ -183,7 +183,7 @@ void SlabSystem::sumPairForces(double historyDt)
         }
         if constexpr (Rolling) std::fill(rollingScale_.begin() + first, rollingScale_.begin() + last, 0.0);
     };
-    sumPairGroups(settings_.nThreads, n, zeroBlock, group, contactCount_, maxOverlap_);
+    sumPairGroups(threads_, n, zeroBlock, group, contactCount_, maxOverlap_);
     if constexpr (Rolling) limitRollingTorques<Law>();
 }
 

@@ -217,7 +217,7 @@ void SlabSystem::addWallForcesAndKickWith(double historyDt, bool kick, bool flui
 
     std::size_t touching = 0;
     double maxOverlap = maxOverlap_;
-#pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
+#pragma omp parallel num_threads(threads_) reduction(+ : touching) \
     reduction(max : maxOverlap)
     {
         // As System's: each thread its own range of particles for every loop (no barrier
@@ -286,7 +286,7 @@ double SlabSystem::drift()
     const SlabDriftLoop driftLoop = streamingLoops().slabFirstHalfKickAndDrift;
     double maxDisplacement2 = 0.0;
     double lost = 0.0;
-#pragma omp parallel num_threads(settings_.nThreads) reduction(max : maxDisplacement2) \
+#pragma omp parallel num_threads(threads_) reduction(max : maxDisplacement2) \
     reduction(+ : lost)
     {
         const auto [first, last] = threadShare(n);

@@ -181,7 +181,7 @@ void System::sumPairForces(double historyDt)
         std::fill(sumFt + first, sumFt + last, 0.0);
         if constexpr (Rolling) std::fill(share + first, share + last, 0.0);
     };
-    sumPairGroups(settings_.nThreads, n, zeroBlock, group, contactCount_, maxOverlap_);
+    sumPairGroups(threads_, n, zeroBlock, group, contactCount_, maxOverlap_);
     if constexpr (Rolling) limitRollingTorques<Law>();
 }
 
@@ -224,7 +224,7 @@ void System::addWallForcesAndKickWith(double historyDt, bool kick, bool fluid)
 
     std::size_t touching = 0;
     double maxOverlap = maxOverlap_;
-#pragma omp parallel num_threads(settings_.nThreads) reduction(+ : touching) \
+#pragma omp parallel num_threads(threads_) reduction(+ : touching) \
     reduction(max : maxOverlap)
     {
         // Each thread its own range of particles, for both loops (no barrier between).
@@ -287,7 +287,7 @@ double System::drift()
     const DriftLoop driftLoop = streamingLoops().firstHalfKickAndDrift;
     double maxDisplacement2 = 0.0;
     double lost = 0.0;
-#pragma omp parallel num_threads(settings_.nThreads) reduction(max : maxDisplacement2) \
+#pragma omp parallel num_threads(threads_) reduction(max : maxDisplacement2) \
     reduction(+ : lost)
     {
         const auto [first, last] = threadShare(n);

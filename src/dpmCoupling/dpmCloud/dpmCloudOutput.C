@@ -188,7 +188,29 @@ void Foam::dpmCloud::report(Ostream& os) const
         << dem::stableTimeStep(s) << " s, eq. 7 bound "
         << engine_.dem().timeStepBound() << " s" << nl
         << "    particle files every " << writeInterval_ << " s in "
-        << mesh_.time().path()/"particles" << endl;
+        << mesh_.time().path()/"particles" << nl
+        << "    DEM threads: " << s.nThreads;
+    if (s.nThreads > 1 && s.measureThreads)
+    {
+        os  << ", or one where the run's own timing finds one faster"
+            << " (threadChoice measured; the same bits either way)";
+    }
+    os  << endl;
+}
+
+
+void Foam::dpmCloud::reportThreads(Ostream& os) const
+{
+    const dem::Settings& s = engine_.dem().settings();
+    if (s.nThreads == 1 || !s.measureThreads)
+    {
+        return;
+    }
+    const label one = engine_.dem().stepsOnOneThread();
+    const label all = engine_.dem().stepsOnAllThreads();
+    os  << "DEM threads (threadChoice measured): " << s.nThreads << " in "
+        << all << " CFD steps, one in " << one << " ("
+        << label(100.0*one/max(one + all, label(1))) << "%)" << endl;
 }
 
 

@@ -70,6 +70,22 @@ dem::Settings Foam::particleEngine::settings
     s.dt = dict_.get<scalar>("deltaT");
     s.nThreads = dict_.lookupOrDefault<label>("nThreads", 1);
 
+    // How many of the nThreads a CFD step's DEM sub-steps run on: the faster
+    // of one and all, timed on the run (threads sleeping at each barrier, or
+    // cores shared with other runs, can make more threads slower), or all
+    const word threadChoice =
+        dict_.lookupOrDefault<word>("threadChoice", "measured");
+    if (threadChoice != "measured" && threadChoice != "fixed")
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'threadChoice' = " << threadChoice
+            << " in constant/particleProperties; allowed: measured (the faster"
+            << " of one thread and nThreads, timed on the run) or fixed"
+            << " (nThreads)"
+            << exit(FatalIOError);
+    }
+    s.measureThreads = threadChoice == "measured";
+
     // Verlet skin of the neighbour list (default: the DEM's, for discs
     // chosen at each list build from the fastest particle's displacement,
     // 0.1-0.8 d_min; 0.1 d_min in the slab): a wider skin means fewer list

@@ -23,6 +23,7 @@
 #include "dem/ContactList.hpp"
 #include "dem/Facade.hpp"
 #include "dem/NbsSearch.hpp"
+#include "dem/ThreadChooser.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -116,6 +117,11 @@ public:
     std::int64_t neighbourListBuilds() const { return listBuilds_; }
     /// The Verlet skin of the current neighbour list, m.
     double neighbourSkin() const { return skin_; }
+    /// The threads the next loops run on: Settings::nThreads, or with measureThreads the
+    /// team ThreadChooser picked for the current CFD step.
+    int threads() const { return threads_; }
+    /// With measureThreads: the CFD steps advanced on one thread and on nThreads so far.
+    const ThreadChooser& threadChooser() const { return threadChooser_; }
     /// The diameter the search's cells are sized by (with the skin): the largest, unless the
     /// largest particles are few (at most largeFraction of all and maxLarge) and more than
     /// largeRatio times any other: the search then tests those against every particle and
@@ -182,6 +188,8 @@ protected:
     static constexpr double skinMaxFraction = 0.8;
 
     Settings settings_;
+    int threads_;                        // the team of the parallel loops (threads())
+    ThreadChooser threadChooser_;
     int nClasses_;
     double smallestDiameter_, largestDiameter_;
     double cellDiameter_;                // searchCellDiameter() at the last build

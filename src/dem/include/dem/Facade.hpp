@@ -114,6 +114,10 @@ struct Settings {
     double gravity[2] = {0.0, -9.81};  ///< m/s^2
     double dt = 1e-5;                  ///< DEM step, s
     int nThreads = 1;
+    /// With nThreads > 1: each CFD step's sub-steps (advance) run on nThreads or on one
+    /// thread, whichever the run's own timing found faster (alternating trials, repeated as
+    /// the load changes: ThreadChooser). The results do not depend on it, the speed does.
+    bool measureThreads = false;
     /// Verlet skin of the neighbour list built by NBS, m, fixed. < 0 (the default): adaptive
     /// in 2D, chosen at each list build from the fastest particle's displacement per step u
     /// since the last build as sqrt(20 d_min u) (the least cost of builds and candidate
@@ -331,6 +335,10 @@ public:
     std::int64_t neighbourListBuilds() const;
     /// The Verlet skin of the current neighbour list, m (Settings::neighbourSkin).
     double neighbourSkin() const;
+    /// Settings::measureThreads: the CFD steps (advance) run so far on one thread and on
+    /// nThreads.
+    std::int64_t stepsOnOneThread() const;
+    std::int64_t stepsOnAllThreads() const;
     /// Heap memory held by particle, contact and search arrays, bytes.
     std::size_t memoryBytes() const;
 

@@ -1,0 +1,46 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The team size of a repeated piece of work (a CFD step's DEM sub-steps), chosen by timing
+// it: one thread or all of them, whichever ran faster. Threads that sleep at every barrier
+// (OMP_WAIT_POLICY=passive), cores shared with other runs, or a step too short to share make
+// more threads slower than one, and which holds changes with the host's load. The engines'
+// results do not depend on the team size, so the choice changes only the speed.
+
+#include <array>
+#include <cstdint>
+
+namespace dem {
+
+class ThreadChooser {
+public:
+    /// Trials alternate the two candidates, trialCalls calls of each (all threads first);
+    /// the one with the smaller median runs for a hold of calls, then the next trial. The
+    /// hold starts at minHold and doubles up to maxHold while the trials keep the choice,
+    /// so that a settled choice costs few trials and a change of the load is seen again.
+    static constexpr int trialCalls = 5;
+    static constexpr std::int64_t minHold = 50;
+    static constexpr std::int64_t maxHold = 3200;
+
+    explicit ThreadChooser(int maxThreads);
+
+    /// The team size for the next call.
+    int next() const;
+    /// The wall time of the call just made with next()'s team size, s.
+    void record(double seconds);
+
+    int maxThreads() const { return maxThreads_; }
+    /// Calls made so far on one thread, and on maxThreads.
+    std::int64_t callsOnOne() const { return calls_[0]; }
+    std::int64_t callsOnAll() const { return calls_[1]; }
+
+private:
+    int maxThreads_;
+    int trial_ = 0;                       // calls made in the current trial; 2 trialCalls: none
+    std::array<std::array<double, trialCalls>, 2> times_{};   // [one, all][call]
+    int chosen_;                          // the team size held
+    std::int64_t hold_ = minHold, heldLeft_ = 0;
+    std::array<std::int64_t, 2> calls_{};
+};
+
+} // namespace dem

@@ -1,0 +1,136 @@
+// SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The team size chosen by timing (ThreadChooser): the faster of one thread and all wins, a
+// settled choice costs few trials, a change of the load is seen within a hold, one slow call
+// in a trial does not decide it; and the engines under it keep the bits of one thread.
+
+#include "dem/SlabSystem.hpp"
+#include "dem/ThreadChooser.hpp"
+
+#include "TestHelpers.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <functional>
+#include <utility>
+
+using namespace dem;
+using namespace dem::test;
+
+namespace {
+
+/// Runs `calls` calls, each taking cost(team, call) s; returns the calls made on all threads.
+std::int64_t drive(ThreadChooser& chooser, std::int64_t calls,
+                   const std::function<double(int, std::int64_t)>& cost)
+{
+    const std::int64_t before = chooser.callsOnAll();
+    for (std::int64_t k = 0; k < calls; ++k) chooser.record(cost(chooser.next(), k));
+    return chooser.callsOnAll() - before;
+}
+
+constexpr std::int64_t trialCalls = ThreadChooser::trialCalls;
+
+} // namespace
+
+TEST(ThreadChooser, OneThreadWhenTwoAreSlower)
+{
+    // Passive waiting: two threads 2.5 times slower than one
+    ThreadChooser chooser(2);
+    const std::int64_t onAll = drive(chooser, 10000, [](int team, std::int64_t) {
+        return team == 1 ? 1.0e-3 : 2.5e-3;
+    });
+    EXPECT_EQ(chooser.next(), 1);
+    // Holds of 50, 100, 200, ..., 3200, 3200: nine trials in 10^4 calls, trialCalls each on
+    // all threads
+    EXPECT_LE(onAll, 9 * trialCalls);
+    EXPECT_GE(onAll, 8 * trialCalls);
+    EXPECT_EQ(chooser.callsOnOne() + chooser.callsOnAll(), 10000);
+}
+
+TEST(ThreadChooser, AllThreadsWhenFaster)
+{
+    ThreadChooser chooser(2);
+    drive(chooser, 10000, [](int team, std::int64_t) { return team == 1 ? 1.7e-3 : 1.0e-3; });
+    EXPECT_EQ(chooser.next(), 2);
+    EXPECT_LE(chooser.callsOnOne(), 9 * trialCalls);
+}
+
+TEST(ThreadChooser, FollowsAChangeOfTheLoadWithinAHold)
+{
+    // Two threads faster for 10^4 calls, then (another run takes a core) slower
+    ThreadChooser chooser(2);
+    const auto cost = [](int team, std::int64_t k) {
+        const bool shared = k >= 10000;
+        return team == 1 ? 1.0e-3 : (shared ? 3.0e-3 : 0.6e-3);
+    };
+    std::int64_t k = 0;
+    for (; k < 10000; ++k) chooser.record(cost(chooser.next(), k));
+    EXPECT_EQ(chooser.next(), 2);
+    // At most a whole hold and a trial later the choice has changed
+    for (; k < 10000 + ThreadChooser::maxHold + 2 * trialCalls; ++k) {
+        chooser.record(cost(chooser.next(), k));
+    }
+    EXPECT_EQ(chooser.next(), 1);
+}
+
+TEST(ThreadChooser, OneSlowCallDoesNotDecideATrial)
+{
+    // A trial's first call on all threads includes a neighbour-list build ten times the
+    // step: the medians still prefer all threads (0.8 ms against 1 ms)
+    ThreadChooser chooser(2);
+    int call = 0;
+    while (call < 2 * trialCalls) {
+        const int team = chooser.next();
+        chooser.record(team == 1 ? 1.0e-3 : (call == 0 ? 8.0e-3 : 0.8e-3));
+        ++call;
+    }
+    EXPECT_EQ(chooser.next(), 2);
+}
+
+TEST(ThreadChooser, OneThreadAllowedIsOneThread)
+{
+    ThreadChooser chooser(1);
+    drive(chooser, 100, [](int, std::int64_t) { return 1e-3; });
+    EXPECT_EQ(chooser.next(), 1);
+    EXPECT_EQ(chooser.callsOnOne(), 100);
+}
+
+TEST(ThreadChooser, MeasuredThreadsKeepTheBitsOfOneThread)
+{
+    // The slab engine, a bed on the floor: each CFD step runs on the team chosen for it, the
+    // team changes as timed, and the particles follow the one-thread run bit for bit
+    const auto settings = [](int threads, bool measured) {
+        Settings s = paperSettings({0.0, 0.02, 0.0, 0.04});
+        s.gravity[1] = -9.81;
+        s.dimension = 3;
+        s.slabDepth = 0.0075;
+        s.nThreads = threads;
+        s.measureThreads = measured;
+        return s;
+    };
+    SlabSystem one(settings(1, false)), measured(settings(2, true));
+    for (SlabSystem* sim : {&one, &measured}) {
+        sim->packRandom({120, 40}, {0.0, 0.02, 0.0, 0.015}, 5);
+        sim->settle(0.15, 0.0);   // landed on the floor
+    }
+    int teamsSeen = 0;
+    for (int k = 0; k < 60; ++k) {
+        const int team = measured.threadChooser().next();
+        one.advance(1e-4);
+        measured.advance(1e-4);
+        EXPECT_EQ(measured.threads(), team) << "CFD step " << k;
+        teamsSeen |= team;   // 1 and 2: bits 1 and 2
+    }
+    EXPECT_EQ(teamsSeen, 3);
+    EXPECT_EQ(measured.threadChooser().callsOnOne() + measured.threadChooser().callsOnAll(), 60);
+    EXPECT_GT(one.contactCount(), 50u);
+    const SlabParticles& a = one.particles();
+    const SlabParticles& b = measured.particles();
+    for (const auto& [u, v] : {std::pair{&a.x, &b.x}, {&a.y, &b.y}, {&a.z, &b.z}, {&a.vx, &b.vx},
+                               {&a.vy, &b.vy}, {&a.vz, &b.vz}, {&a.wx, &b.wx}, {&a.wy, &b.wy},
+                               {&a.wz, &b.wz}}) {
+        ASSERT_EQ(u->size(), v->size());
+        EXPECT_EQ(std::memcmp(u->data(), v->data(), u->size() * sizeof(double)), 0);
+    }
+}
