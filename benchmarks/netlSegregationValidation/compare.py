@@ -24,10 +24,12 @@ above the experiment's and is undecided otherwise; a trend holds if it holds
 with the censored at their end times (that bound is conservative both for
 the slower and for the faster condition) and is undecided otherwise.
 
-  compare.py <run dir> [-reference <dir>] [-figure <png>]
+  compare.py <run dir> [-reference <dir>] [-figure <png>] [-perSeed]
 
 -figure draws each condition's rise times, the seeds' beside the
-experiment's repeats, with the means and their intervals.
+experiment's repeats, with the means and their intervals. -perSeed also
+prints each seed's rise times (surface at 99 %; >= a censored one, at its
+end time): the record a results page keeps.
 """
 
 import glob
@@ -65,18 +67,29 @@ def end_time(case):
         return float(re.search(r"^endTime\s+([^;\s]+)", f.read(), re.M).group(1))
 
 
+def seed_times(case):
+    """A finished seed's [k, fraction] rise times, the censored at the end
+    time, and which are censored; None while it runs."""
+    table = os.path.join(case, "postProcessing", "riseTime", "0", "riseOrder.dat")
+    if not os.path.isfile(table):
+        return None
+    t = np.loadtxt(table, ndmin=2)
+    t = t[:, 1:] if t.shape[1] == len(FRACTIONS) + 1 else t
+    return np.where(np.isnan(t), end_time(case), t), np.isnan(t)
+
+
+def seeds(run, condition):
+    """The condition's seed directories, in the order of their numbers."""
+    return sorted(glob.glob(os.path.join(run, condition + "_seed*")),
+                  key=lambda p: int(re.search(r"_seed(\d+)$", p).group(1)))
+
+
 def simulated(run, condition):
     """([seed, k, fraction] rise times of the finished seeds, with the
     censored at their end time; [seed, k, fraction] censored or not)."""
-    rows, censored = [], []
-    for case in sorted(glob.glob(os.path.join(run, condition + "_seed*"))):
-        table = os.path.join(case, "postProcessing", "riseTime", "0", "riseOrder.dat")
-        if os.path.isfile(table):
-            t = np.loadtxt(table, ndmin=2)
-            t = t[:, 1:] if t.shape[1] == len(FRACTIONS) + 1 else t
-            censored.append(np.isnan(t))
-            rows.append(np.where(np.isnan(t), end_time(case), t))
-    return np.array(rows), np.array(censored, dtype=bool)
+    found = [t for t in map(seed_times, seeds(run, condition)) if t is not None]
+    return (np.array([t for t, _ in found]),
+            np.array([c for _, c in found], dtype=bool))
 
 
 def welch_above_zero(a, b):
@@ -88,6 +101,21 @@ def welch_above_zero(a, b):
     dof = (va + vb)**2 / (va**2 / (len(a) - 1) + vb**2 / (len(b) - 1))
     d, h = a.mean() - b.mean(), stats.t.ppf(0.975, dof) * np.sqrt(va + vb)
     return bool(d - h > 0), d, h      # a bool, not numpy's: the verdicts test `is False`
+
+
+def print_per_seed(run, conditions):
+    """Each seed's t_r(k), s, at the criteria's surface."""
+    print()
+    print("| condition | seed | t_r(1), t_r(2) ..., s |")
+    print("| --- | --- | --- |")
+    for c in conditions:
+        for case in seeds(run, c):
+            found = seed_times(case)
+            if found is not None:
+                t, cens = found
+                print("| %s | %s | %s |" % (c, case.rsplit("_seed", 1)[1], ", ".join(
+                    "%s%.2f" % (">=" if cens[k, SURFACE] else "", t[k, SURFACE])
+                    for k in range(len(t)))))
 
 
 def draw(drawn, path):
@@ -167,6 +195,8 @@ def main(argv):
                       % (name, which, a, b, d, h, verdict))
                 if which == "simulated":
                     passed.append(ok)
+    if "-perSeed" in argv:
+        print_per_seed(run, conditions)
     if figure and drawn:
         draw(drawn, figure)
     decided = [p for p in passed if p is not None]

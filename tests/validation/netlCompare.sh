@@ -9,7 +9,8 @@
 # means and intervals, each overlap verdict (yes; no; no for a censored
 # seed whose lower bound lies above; undecided for one whose bound does
 # not), the surface's bracket with its censored bound, the trends (holds,
-# not shown, undecided with a censored seed) and the count of criteria met.
+# not shown, undecided with a censored seed), the count of criteria met and
+# the per-seed record.
 # Then the experiment's means and intervals from its own files against the
 # table of LaMarche et al. (2022) in the reference folder's SOURCES.md.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
@@ -105,6 +106,16 @@ for line in ("heavier bed rises slower, simulated: t_r(1) U183_M227_1L - U183_M1
     print("%s: %s" % (line, "ok" if good else "MISSING"))
 sys.exit(0 if ok else 1)
 PY
+
+# Each seed's record, the censored at their end time as bounds
+py "$compare" run -reference experiment -perSeed > log.perSeed 2>&1 \
+    || { cat log.perSeed; fail "compare.py -perSeed"; }
+for row in "| U214_M177_4L | 1 | 9.00, 11.00, 12.00, 23.00 |" \
+           "| U214_M177_4L | 3 | 11.00, 13.00, >=24.00, >=24.00 |" \
+           "| U183_M227_1L | 2 | 13.00 |"
+do
+    grep -qF "$row" log.perSeed || fail "-perSeed: '$row' not in $(cat log.perSeed)"
+done
 
 py "$compare" censored -reference experiment > log.censored 2>&1 \
     || { cat log.censored; fail "compare.py on censored seeds"; }
