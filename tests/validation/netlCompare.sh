@@ -126,6 +126,30 @@ grep -q "| U183_M227_1L | 1 | 3 | >=" log.censored \
 grep -q "criteria met: 1 of 1 decided (2 undecided)" log.censored \
     || fail "the count with undecided criteria: $(cat log.censored)"
 
+# heights.py on particle files with known heights: 100 glass centres at
+# 1..100 mm (99 % below 99.01 mm, numpy's linear quantile), two intruders
+# listed in the reverse order of their ids, rising 1 mm per second
+BENCH=$testsDir/../benchmarks/netlSegregationValidation py - <<'PY' || fail "heights.py's series"
+import sys
+import numpy as np
+from dpmfoam2d import particles as pio
+import importlib.util, os
+spec = importlib.util.spec_from_file_location("heights", os.environ["BENCH"] + "/heights.py")
+heights = importlib.util.module_from_spec(spec); spec.loader.exec_module(heights)
+for k in range(5):
+    t = 0.5 * k
+    y = np.concatenate([np.arange(1, 101) * 1e-3, [0.020 + 1e-3 * t, 0.010 + 1e-3 * t]])
+    pos = np.column_stack([np.full(102, 0.01), y, np.full(102, 0.01)])
+    pio.write_particles("heights", t, pos, np.full(102, 3e-3), np.r_[np.zeros(100, np.int8), [1, 1]],
+                        ids=np.r_[np.arange(100), [101, 100]])
+t, y, surface, mean = heights.series("heights", "1", 1.0)
+ok = np.allclose(t, [0, 1, 2]) and np.allclose(y[:, 0], [0.010, 0.011, 0.012]) \
+    and np.allclose(y[:, 1], [0.020, 0.021, 0.022]) and np.allclose(surface, 0.09901) \
+    and np.allclose(mean, 0.0505)
+print("heights.py series: t %s, intruders %s, surface %s, mean %s: %s"
+      % (t, y.tolist(), surface, mean, "ok" if ok else "WRONG"))
+sys.exit(0 if ok else 1)
+PY
 # The experiment's own files against its published means and intervals
 if [ -d "$reference" ]
 then
