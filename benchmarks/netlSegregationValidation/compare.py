@@ -20,9 +20,11 @@ An intruder that has not risen by a seed's end time is censored: its rise
 time is only known to exceed the end time. Where a condition has censored
 seeds, the mean is given as a lower bound (the censored taken at their end
 time, marked >=); criterion 1 then fails if even that bound's interval lies
-above the experiment's and is undecided otherwise; a trend holds if it holds
-with the censored at their end times (that bound is conservative both for
-the slower and for the faster condition) and is undecided otherwise.
+above the experiment's and is undecided otherwise. A trend holds if it holds
+with the censored at their end times and the condition expected to be
+faster has none (a bound on the slower one only understates the
+difference); it is undecided when it would hold but the faster condition
+has censored seeds, or would not hold and either has.
 
   compare.py <run dir> [-reference <dir>] [-figure <png>] [-perSeed]
 
@@ -187,9 +189,10 @@ def main(argv):
         if a in first and b in first:
             for which, j in (("simulated", 0), ("experiment", 1)):
                 ok, d, h = welch_above_zero(first[a][j], first[b][j])
-                censored = which == "simulated" and (first[a][2] or first[b][2])
+                slower, faster = (first[a][2], first[b][2]) if which == "simulated" \
+                    else (False, False)
                 verdict = {True: "holds", False: "not shown", None: "too few"}[ok]
-                if censored and ok is False:
+                if (ok is True and faster) or (ok is False and (slower or faster)):
                     ok, verdict = None, "undecided (censored seeds)"
                 print("%s, %s: t_r(1) %s - %s = %.2f +- %.2f s: %s"
                       % (name, which, a, b, d, h, verdict))
