@@ -100,6 +100,8 @@ def welch_above_zero(a, b):
     if len(a) < 2 or len(b) < 2:
         return None, np.nan, np.nan
     va, vb = a.var(ddof=1) / len(a), b.var(ddof=1) / len(b)
+    if va + vb == 0:            # no spread (every seed censored at one end time)
+        return bool(a.mean() > b.mean()), a.mean() - b.mean(), 0.0
     dof = (va + vb)**2 / (va**2 / (len(a) - 1) + vb**2 / (len(b) - 1))
     d, h = a.mean() - b.mean(), stats.t.ppf(0.975, dof) * np.sqrt(va + vb)
     return bool(d - h > 0), d, h      # a bool, not numpy's: the verdicts test `is False`
