@@ -1,0 +1,59 @@
+#!/bin/bash
+# SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The cases of benchmarks/netlSegregationValidation (caseFunctions) against
+# the experiment of LaMarche et al. (2022): each condition's U0, glass count
+# (its bed mass over one bead's, 2522 kg/m3 and 3.101 mm), intruders and
+# seed; a variant's entries and its shift ('add': U0plus0.10 gives 1.93 and
+# 2.234 m/s); sweepUmf's case records the inlet's pressure every 1 ms in
+# place of the early end. Cases only: no solver runs.
+. "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
+here=$testsDir/../benchmarks/netlSegregationValidation
+cd "$workDir" || fail "work directory"
+. "$here/caseFunctions" || fail "caseFunctions"
+
+value() { foamDictionary -entry "$2" -value "$1/$3" 2>/dev/null; }
+same() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a - b < 1e-9 && b - a < 1e-9) }'; }
+
+# The glass count: the bed's mass over one bead's
+beads() { awk -v m="$1" 'BEGIN { printf "%d", m / (2522 * 3.14159265358979 / 6 * 3.101e-3^3) + 0.5 }'; }
+for row in "U214_M177_4L 2.134 177.46e-3 4" "U183_M177_1L 1.83 177.46e-3 1" \
+           "U183_M227_1L 1.83 227.47e-3 1"
+do
+    read -r c U0 mass intruders <<<"$row"
+    variant=""
+    makeCase "$c" 3 "$c" || fail "$c: case not made"
+    same "$(value $c U0 constant/gasProperties)" "$U0" || fail "$c: U0 $(value $c U0 constant/gasProperties), not $U0"
+    [ "$(value $c classes.glass.count constant/particleProperties)" = "$(beads "$mass")" ] \
+        || fail "$c: glass count not $(beads "$mass")"
+    [ "$(value $c classes.intruder.count constant/particleProperties)" = "$intruders" ] \
+        && [ "$(value $c initialBed.place.intruder.random constant/particleProperties)" = "$intruders" ] \
+        || fail "$c: not $intruders intruders placed at random"
+    [ "$(value $c initialBed.seed constant/particleProperties)" = 3 ] || fail "$c: seed"
+    grep -q "nCells: 384$" "$c/log.blockMesh" || fail "$c: mesh not 4 x 24 x 4"
+    pass "$c: U0 $U0 m/s, $(beads "$mass") glass beads, $intruders intruders, seed 3"
+done
+
+variant=U0plus0.10
+makeCase U183_M177_1L 1 plus183 && makeCase U214_M177_4L 1 plus214 || fail "U0plus0.10 cases"
+same "$(value plus183 U0 constant/gasProperties)" 1.93 && same "$(value plus214 U0 constant/gasProperties)" 2.234 \
+    || fail "U0plus0.10: U0 $(value plus183 U0 constant/gasProperties), $(value plus214 U0 constant/gasProperties)"
+variant=formulationA
+makeCase U214_M177_4L 1 formA && [ "$(value formA formulation constant/particleProperties)" = A ] \
+    || fail "formulationA: formulation not A"
+variant=slab
+makeCase U214_M177_4L 1 slab && [ "$(value slab voidageModel constant/particleProperties)" = slab3D ] \
+    && [ "$(value slab nz system/bedGeometry)" = 1 ] || fail "slab: not one cell deep with slab3D"
+grep -q "nCells: 96$" slab/log.blockMesh || fail "slab: mesh not 4 x 24 x 1 ($(grep nCells slab/log.blockMesh))"
+pass "variants: U0 shifted to 1.93 and 2.234 m/s, formulation A, the slab one cell deep"
+
+variant=""
+makeSweepCase U183_M227_1L 1 sweep 0.5 || fail "sweepUmf's case"
+[ "$(value sweep functions.inletPressure.type system/controlDict)" = surfaceFieldValue ] \
+    && [ "$(value sweep functions.inletPressure.name system/controlDict)" = inlet ] \
+    && same "$(value sweep functions.inletPressure.writeInterval system/controlDict)" 1e-3 \
+    || fail "sweepUmf's case: no inlet pressure record"
+value sweep functions.intrudersRisen system/controlDict >/dev/null \
+    && fail "sweepUmf's case: the early end on the rise is still there"
+same "$(value sweep writeInterval system/controlDict)" 0.5 || fail "sweepUmf's case: a write per step"
+pass "sweepUmf's case: p_rgh on the inlet every 1 ms, no early end, a write every step"
