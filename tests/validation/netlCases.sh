@@ -51,8 +51,10 @@ variant=""
 makeSweepCase U183_M227_1L 1 sweep 0.5 || fail "sweepUmf's case"
 [ "$(value sweep functions.inletPressure.type system/controlDict)" = surfaceFieldValue ] \
     && [ "$(value sweep functions.inletPressure.name system/controlDict)" = inlet ] \
-    && same "$(value sweep functions.inletPressure.writeInterval system/controlDict)" 1e-3 \
-    || fail "sweepUmf's case: no inlet pressure record"
+    && [ "$(value sweep functions.inletPressure.writeControl system/controlDict)" = timeStep ] \
+    && same "$(awk -v n="$(value sweep functions.inletPressure.writeInterval system/controlDict)" \
+                   -v dt="$(value sweep deltaT system/controlDict)" 'BEGIN { print n * dt }')" 1e-3 \
+    || fail "sweepUmf's case: no inlet pressure record every 1 ms"
 value sweep functions.intrudersRisen system/controlDict >/dev/null \
     && fail "sweepUmf's case: the early end on the rise is still there"
 same "$(value sweep writeInterval system/controlDict)" 0.5 || fail "sweepUmf's case: a write per step"
