@@ -20,7 +20,7 @@
 # e = 1 - pi d/(6 depth) for this lattice (9 spheres of pi d^3/6 in a cell
 # 3d x 3d x depth), so Ergun holds at any depth the particles fit in.
 #
-# Formulation A (Zhou et al. 2010 set I) gives the same gradient: there the
+# Formulation A (Zhou et al. 2010 set II) gives the same gradient: there the
 # gas carries eps_g grad p and the drag is eps_g K_B, eps_g = 1 - phiP.
 #
 # In B, the same steady state also checks the gas's momentum over the whole

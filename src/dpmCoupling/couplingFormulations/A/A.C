@@ -33,7 +33,7 @@ namespace couplingFormulations
 Foam::string Foam::couplingFormulations::A::description() const
 {
     return
-        "formulation A (Zhou et al. 2010 set I): particles feel the"
+        "formulation A (Zhou et al. 2010 set II): particles feel the"
         " drag eps_g K_B (u - v) and the pressure-gradient force"
         " -V_p grad p; the gas carries eps_g grad p and the drag only";
 }

@@ -30,7 +30,7 @@ namespace couplingFormulations
 Foam::string Foam::couplingFormulations::B::description() const
 {
     return
-        "formulation B (the paper's, Zhou et al. 2010 set II): the gas"
+        "formulation B (the paper's, Zhou et al. 2010 set III): the gas"
         " sees the whole pressure gradient; particles feel the drag"
         " K_B (u - v) and the buoyancy -rho_g V_p g";
 }
