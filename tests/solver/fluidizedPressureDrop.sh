@@ -49,17 +49,8 @@ setSlab "${4:-}" "${5:-}"
 cat >>system/controlDict <<'EOF2'
 functions
 {
-    inletPressure
-    {
-        type            surfaceFieldValue;
-        libs            ("libfieldFunctionObjects.so");
-        regionType      patch;
-        name            inlet;
-        operation       areaAverage;
-        fields          (p_rgh);
-        writeFields     false;
-        log             false;
-    }
+    #includeFunc inletPressure
+    inletPressure { writeInterval 1; }      // every step
 }
 EOF2
 runSolver
