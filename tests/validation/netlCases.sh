@@ -5,8 +5,8 @@
 # the experiment of LaMarche et al. (2022): each condition's U0, glass count
 # (its bed mass over one bead's, 2522 kg/m3 and 3.101 mm), intruders and
 # seed; a variant's entries and its shift ('add': U0plus0.10 gives 1.93 and
-# 2.234 m/s); sweepUmf's case records the inlet's pressure every 1 ms in
-# place of the early end. Cases only: no solver runs.
+# 2.234 m/s); variants joined by '+'; sweepUmf's case records the inlet's
+# pressure every 1 ms in place of the early end. Cases only: no solver runs.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 here=$testsDir/../benchmarks/netlSegregationValidation
 cd "$workDir" || fail "work directory"
@@ -46,6 +46,14 @@ makeCase U214_M177_4L 1 slab && [ "$(value slab voidageModel constant/particlePr
     && [ "$(value slab nz system/bedGeometry)" = 1 ] || fail "slab: not one cell deep with slab3D"
 grep -q "nCells: 96$" slab/log.blockMesh || fail "slab: mesh not 4 x 24 x 1 ($(grep nCells slab/log.blockMesh))"
 pass "variants: U0 shifted to 1.93 and 2.234 m/s, formulation A, the slab one cell deep"
+
+variant=Beetstra+packedFrictionless
+makeCase U183_M177_1L 1 joined && [ "$(value joined dragModel constant/particleProperties)" = Beetstra ] \
+    && [ "$(value joined initialBed.settleFriction constant/particleProperties)" = 0 ] \
+    || fail "Beetstra+packedFrictionless: not both applied"
+missing=$(variantMissing Beetstra+noSuchBracket) && [ "$missing" = "no variant file variants/noSuchBracket" ] \
+    && ! variantMissing Beetstra+packedFrictionless >/dev/null || fail "a missing part of a joined variant not named"
+pass "joined variants: Beetstra's drag and the frictionless settling in one case; a missing part named"
 
 variant=""
 makeSweepCase U183_M227_1L 1 sweep 0.5 || fail "sweepUmf's case"

@@ -35,7 +35,7 @@ Description
     second dpmPackBed refuses to overwrite it without -overwrite.
 
     The bed records what it was made for (counts per class, packing region,
-    seed, settleTime; diameters, densities, contact settings, box, gravity
+    seed, settleTime, settleFriction; diameters, densities, contact settings, box, gravity
     and DEM step): a case whose particles differ is refused with the
     difference named.
 

@@ -16,6 +16,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <optional>
+#include <vector>
 
 #include <omp.h>
 
@@ -43,6 +45,40 @@ double resolvedSkin(const Settings& s, double startFraction)
 {
     return s.neighbourSkin >= 0.0 ? s.neighbourSkin : startFraction * smallestDiameter(s);
 }
+
+/// While it lives, every law's sliding friction is the bed's settle friction (if the recipe
+/// sets one); the laws' own come back when it goes, a settling that throws included.
+/// Only ContactLaw::mu changes: stiffness, damping and rolling resistance stay the laws' own.
+class SettleFriction {
+public:
+    SettleFriction(std::vector<ContactLaw>& pairLaws, std::vector<ContactLaw>& wallLaws,
+                   const std::optional<double>& settleFriction)
+        : laws_{&pairLaws, &wallLaws}
+    {
+        if (!settleFriction) return;
+        const double mu = *settleFriction;
+        for (std::vector<ContactLaw>* laws : laws_) {
+            for (ContactLaw& law : *laws) {
+                own_.push_back(law.mu);
+                law.mu = mu;
+            }
+        }
+    }
+    ~SettleFriction()
+    {
+        auto own = own_.cbegin();
+        if (own == own_.cend()) return;
+        for (std::vector<ContactLaw>* laws : laws_) {
+            for (ContactLaw& law : *laws) law.mu = *own++;
+        }
+    }
+    SettleFriction(const SettleFriction&) = delete;
+    SettleFriction& operator=(const SettleFriction&) = delete;
+
+private:
+    std::vector<ContactLaw>* laws_[2];   // the pairs' and the walls'
+    std::vector<double> own_;            // their own mu, in that order; empty: none changed
+};
 
 } // namespace
 
@@ -147,7 +183,18 @@ double EngineBase<Derived, Traits>::packBed(const BedRecipe& recipe, const Settl
     std::vector<int> rest(recipe.countPerClass);
     for (std::size_t k = 0; k < rest.size() && k < drawn.size(); ++k) rest[k] -= drawn[k];
     derived().packRest(rest, recipe.region, recipe.seed, drawn);
-    const double spent = settle(recipe.settleTime, recipe.keTolerance, progress);
+    double spent = 0.0;
+    {
+        const SettleFriction during(pairLaws_, wallLaws_, recipe.settleFriction);
+        spent = settle(recipe.settleTime, recipe.keTolerance, progress);
+    }
+    if (recipe.settleFriction) {
+        // The forces of the last evaluation, and the tangential springs capped by it, were
+        // the settle friction's: evaluated anew with the contacts' own, which the run's first
+        // step and a saved bed take
+        forcesValid_ = false;
+        ensureReady();
+    }
     recipe_ = recipe;
     return spent;
 }

@@ -9,7 +9,7 @@
 // the step of the last list build (the adaptive skin's state), and a checksum (64-bit
 // FNV-1a of every byte before it) ahead of the end marker.
 // Version policy: as the 2D engine's (StateFile.cpp): this version only is written and
-// read, an older one (1-5) is refused naming the command that converts it.
+// read, an older one (1-6) is refused naming the command that converts it.
 
 #include "StateIntegrity.hpp"
 #include "dem/StateConversion.hpp"
@@ -189,6 +189,7 @@ void SlabSystem::save(const std::string& path) const
             value(recipe_->settleTime);
             value(recipe_->keTolerance);
             array(placedRecord(*recipe_));
+            array(settleFrictionRecord(*recipe_));
         }
         value(stepCount_);
         value(listBuilds_);
@@ -294,6 +295,11 @@ void SlabSystem::load(const std::string& path)
         array(placed);
         if (!placedOfRecord(placed, recipe.placed)) {
             fail("a record of placed particles of " + std::to_string(placed.size()) + " values");
+        }
+        std::vector<double> settleFriction;
+        array(settleFriction);
+        if (!settleFrictionOfRecord(settleFriction, recipe.settleFriction)) {
+            fail("a settle friction of " + std::to_string(settleFriction.size()) + " values");
         }
         if (recipe.countPerClass.size() != static_cast<std::size_t>(nClasses_)) {
             fail("a bed recipe of " + std::to_string(recipe.countPerClass.size()) + " classes");

@@ -10,7 +10,8 @@
 // friction and moduli in the settings key. Slab: version 1 had no bed recipe; 2 added it; 3
 // the skin and the step of the last list build; 4 the run record and the checksum; 5 the
 // key's contact entries as the 2D version 7. 2D version 8 and slab version 6 added the
-// recipe's placed particles (an earlier recipe has none).
+// recipe's placed particles (an earlier recipe has none); 2D 9 and slab 7 its settle friction
+// (an earlier bed settled with the contacts' own).
 
 #include "dem/StateConversion.hpp"
 
@@ -97,8 +98,9 @@ private:
     std::string bytes_;
 };
 
-/// A recipe of the earlier versions: without placed particles.
-std::optional<BedRecipe> readRecipe(In& in)
+/// A recipe of the earlier versions: without a settle friction, and without placed particles
+/// unless `placed`.
+std::optional<BedRecipe> readRecipe(In& in, bool placed)
 {
     if (in.value<std::uint8_t>() == 0) return std::nullopt;
     BedRecipe r;
@@ -107,6 +109,13 @@ std::optional<BedRecipe> readRecipe(In& in)
     r.seed = in.value<std::uint64_t>();
     r.settleTime = in.value<double>();
     r.keTolerance = in.value<double>();
+    if (placed) {
+        std::vector<double> record;
+        in.array(record);
+        if (!placedOfRecord(record, r.placed)) {
+            in.fail("a record of placed particles of " + std::to_string(record.size()) + " values");
+        }
+    }
     return r;
 }
 
@@ -120,6 +129,7 @@ void writeRecipe(Out& out, const std::optional<BedRecipe>& r)
     out.value(r->settleTime);
     out.value(r->keTolerance);
     out.array(placedRecord(*r));
+    out.array(settleFrictionRecord(*r));
 }
 
 /// The contact law a run record names on its "contactLaw <name>" line (the OpenFOAM side's
@@ -193,7 +203,7 @@ template <class List> void writeWalls(Out& out, const List& l)
     out.array(l.start); out.array(l.wall); out.array(l.xi);
 }
 
-/// A 2D state of versions 2-7 in the current layout.
+/// A 2D state of versions 2-8 in the current layout.
 std::string convertDisc(In& in, std::uint32_t version, std::string& notes)
 {
     std::vector<char> record;
@@ -201,7 +211,8 @@ std::string convertDisc(In& in, std::uint32_t version, std::string& notes)
     std::vector<double> key;
     in.array(key);
     if (version < 7) key = currentKey(in, key, record, notes);
-    const std::optional<BedRecipe> recipe = version >= 4 ? readRecipe(in) : std::nullopt;
+    const std::optional<BedRecipe> recipe =
+        version >= 4 ? readRecipe(in, version >= 8) : std::nullopt;
     const auto stepCount = in.value<std::int64_t>();
     const auto listBuilds = in.value<std::int64_t>();
     const std::int64_t lastBuildStep = version >= 5 ? in.value<std::int64_t>() : stepCount;
@@ -257,14 +268,15 @@ std::string convertDisc(In& in, std::uint32_t version, std::string& notes)
     return out.bytes();
 }
 
-/// A slab state of versions 1-5 in the current layout.
+/// A slab state of versions 1-6 in the current layout.
 std::string convertSlab(In& in, std::uint32_t version, std::string& notes)
 {
     std::vector<char> record;
     if (version >= 4) in.array(record);
     std::vector<double> key;
     in.array(key);
-    const std::optional<BedRecipe> recipe = version >= 2 ? readRecipe(in) : std::nullopt;
+    const std::optional<BedRecipe> recipe =
+        version >= 2 ? readRecipe(in, version >= 6) : std::nullopt;
     const auto stepCount = in.value<std::int64_t>();
     const auto listBuilds = in.value<std::int64_t>();
     double skin = 0.0;

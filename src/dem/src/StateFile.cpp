@@ -4,14 +4,15 @@
 // bit for bit (positions, velocities, forces of the last evaluation, the neighbour list
 // in its order, the contact history, the reference positions of the skin criterion); the
 // caller's record of the run (its models, runRecord()); the recipe of a packed bed (counts,
-// region, seed, settling, the placed particles), so that a case can check that a bed was made for its particles;
+// region, seed, settling, the placed particles, the settle friction), so that a case can
+// check that a bed was made for its particles;
 // the step of the last list build (the adaptive skin's clock; the skin itself is the key's
 // last entry); and a checksum (64-bit FNV-1a of every byte before it) ahead of the end marker.
 // Version policy: the version after the magic names the layout. Each engine writes and
-// reads its current version only (2D 8, slab 6; StateConversion.hpp): the loader holds one
+// reads its current version only (2D 9, slab 7; StateConversion.hpp): the loader holds one
 // layout, and every state it reads carries its checksum and the run's record. A change of
 // the layout raises the version and teaches dpmConvertState (StateConversion.cpp) to read
-// the previous one; the converter keeps reading every earlier version (2D 2-7, slab 1-5).
+// the previous one; the converter keeps reading every earlier version (2D 2-8, slab 1-6).
 // load() refuses a file of an older version naming its version and the command that
 // converts it, and any other version as not a valid state.
 
@@ -137,6 +138,7 @@ void StateFile::write(const System& s, Writer& w)
         w.value(s.recipe_->settleTime);
         w.value(s.recipe_->keTolerance);
         w.array(placedRecord(*s.recipe_));
+        w.array(settleFrictionRecord(*s.recipe_));
     }
     w.value(s.stepCount_);
     w.value(s.listBuilds_);
@@ -238,6 +240,11 @@ void StateFile::load(System& s, const std::string& path)
         r.array(placed);
         if (!placedOfRecord(placed, recipe.placed)) {
             r.fail("a record of placed particles of " + std::to_string(placed.size()) + " values");
+        }
+        std::vector<double> settleFriction;
+        r.array(settleFriction);
+        if (!settleFrictionOfRecord(settleFriction, recipe.settleFriction)) {
+            r.fail("a settle friction of " + std::to_string(settleFriction.size()) + " values");
         }
         if (recipe.countPerClass.size() != static_cast<std::size_t>(t.nClasses_)) {
             r.fail("a bed recipe of " + std::to_string(recipe.countPerClass.size())

@@ -69,7 +69,8 @@ std::string olderDisc(const std::string& b, std::uint32_t version, std::string& 
         old.erase(l.recipe, l.recipeEnd - l.recipe);
         expected.replace(l.recipe, l.recipeEnd - l.recipe, std::string(1, '\0'));
     } else if (b[l.recipe]) {
-        old.erase(l.placed, l.recipeEnd - l.placed);   // no placed particles before 8
+        old.erase(l.settleFriction, l.recipeEnd - l.settleFriction);   // none before 9
+        if (version <= 7) old.erase(l.placed, l.settleFriction - l.placed);   // none before 8
     }
     if (version <= 6) shortenKey(old, b, l.key);
     if (version <= 5) {
@@ -98,7 +99,8 @@ std::string olderSlab(const std::string& b, std::uint32_t version, std::string& 
         old.erase(l.recipe, l.recipeEnd - l.recipe);
         expected.replace(l.recipe, l.recipeEnd - l.recipe, std::string(1, '\0'));
     } else if (b[l.recipe]) {
-        old.erase(l.placed, l.recipeEnd - l.placed);   // no placed particles before 6
+        old.erase(l.settleFriction, l.recipeEnd - l.settleFriction);   // none before 7
+        if (version <= 5) old.erase(l.placed, l.settleFriction - l.placed);   // none before 6
     }
     if (version <= 4) shortenKey(old, b, l.key);
     if (version <= 3) {

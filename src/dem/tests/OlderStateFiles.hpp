@@ -27,7 +27,8 @@ template <class T> void put(std::string& b, std::size_t at, T v) { std::memcpy(&
 /// The offsets of a current state's fields, walked from its layout (StateFile::write,
 /// SlabSystem::save).
 struct Layout {
-    std::size_t record, key, recipe, placed = 0, recipeEnd, step, lastBuild, skin = 0, listValid = 0;
+    std::size_t record, key, recipe, placed = 0, settleFriction = 0, recipeEnd, step, lastBuild,
+        skin = 0, listValid = 0;
     std::size_t groupStart, groupStartEnd, pairs, checksum;
     std::uint64_t particles = 0, pairCount = 0;
 
@@ -42,7 +43,8 @@ struct Layout {
         recipeEnd = recipe + 1;
         if (b[recipe]) {
             placed = array(recipe + 1, 4) + 32 + 8 + 8 + 8;
-            recipeEnd = array(placed, 8);
+            settleFriction = array(placed, 8);
+            recipeEnd = array(settleFriction, 8);
         }
         step = recipeEnd;   // step count, list builds
         std::size_t at;

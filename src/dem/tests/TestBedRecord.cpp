@@ -167,7 +167,7 @@ TEST(BedRecord, RestartMismatchNamesTheSetting)
 
 TEST(BedRecord, ConvertedVersionThreeBedIsCheckedOnItsCounts)
 {
-    // A version-3 file (before beds recorded their recipe), converted: the version-8 layout
+    // A version-3 file (before beds recorded their recipe), converted: the version-9 layout
     // without the run record (after the version), the checksum (before the end marker), the
     // key's contact entries of version 7, the recipe flag and the step of the last list
     // build (after the step count and the build count).

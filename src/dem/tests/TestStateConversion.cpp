@@ -94,7 +94,7 @@ TEST(StateConversion, EveryOlderDiscVersionBecomesTheCurrentWritersBytes)
         Simulation refused(settingsOf(2));
         const std::string e = errorOf([&] { refused.load(old); });
         EXPECT_TRUE(has(e, "state file '" + old + "' is of version " + std::to_string(version)
-                           + ", older than this build reads (8): convert it with 'dpmConvertState "
+                           + ", older than this build reads (9): convert it with 'dpmConvertState "
                            + old + "'"))
             << e;
 
@@ -129,7 +129,7 @@ TEST(StateConversion, EveryOlderSlabVersionBecomesTheCurrentWritersBytes)
         Simulation refused(settingsOf(3));
         const std::string e = errorOf([&] { refused.load(old); });
         EXPECT_TRUE(has(e, "slab state file '" + old + "' is of version " + std::to_string(version)
-                           + ", older than this build reads (6): convert it with 'dpmConvertState "
+                           + ", older than this build reads (7): convert it with 'dpmConvertState "
                            + old + "'"))
             << e;
 
@@ -161,17 +161,17 @@ TEST(StateConversion, CurrentUnknownAndForeignFilesAreNamed)
     EXPECT_FALSE(std::filesystem::exists(out));
 
     // A whole file of a version this build does not know (its checksum its own); with the
-    // checksum of version 8 it is a damaged field (TestStateIntegrity)
+    // checksum of version 9 it is a damaged field (TestStateIntegrity)
     std::string unknown = b;
-    put(unknown, 16, std::uint32_t{9});
+    put(unknown, 16, std::uint32_t{10});
     put(unknown, unknown.size() - 24, fnv1a64(unknown.data(), unknown.size() - 24));
     writeAll(current, unknown);
     EXPECT_TRUE(has(errorOf([&] { convertState(current, out); }),
-                    "state file '" + current + "' is not a valid DEM state: 2D state version 9, "
-                    "expected 2 to 8"));
+                    "state file '" + current + "' is not a valid DEM state: 2D state version 10, "
+                    "expected 2 to 9"));
     Simulation sim(settingsOf(2));
     EXPECT_TRUE(has(errorOf([&] { sim.load(current); }),
-                    "state file '" + current + "' is not a valid DEM state: version 9, expected 8"));
+                    "state file '" + current + "' is not a valid DEM state: version 10, expected 9"));
 
     writeAll(current, "a bed of particles, in words");
     EXPECT_TRUE(has(errorOf([&] { convertState(current, out); }), "wrong file type"));
@@ -200,7 +200,7 @@ TEST(StateConversion, TheCommandConvertsInPlaceAndKeepsTheOriginal)
     EXPECT_TRUE(readAll(path + ".version3") == old);
     const std::string said = readAll(log);
     EXPECT_TRUE(has(said, "Converted '" + path + "' (2D state version 3) to '" + path
-                          + "' (version 8)")
+                          + "' (version 9)")
                 && has(said, "Note: it carries no checksum: its integrity could not be checked"))
         << said;
 

@@ -26,9 +26,9 @@ namespace
 const char* const bedEntries =
     "    A bed is made for: each class's count (or massFraction and"
     " totalMass), diameter (or its distribution) and density; contact; the"
-    " mesh's box; g; deltaT; initialBed's seed, settleTime, packHeight (the"
-    " packing region's height, by default from the counts) and place (the"
-    " particles laid first)";
+    " mesh's box; g; deltaT; initialBed's seed, settleTime, settleFriction,"
+    " packHeight (the packing region's height, by default from the counts)"
+    " and place (the particles laid first)";
 
 } // End anonymous namespace
 
@@ -101,7 +101,13 @@ void Foam::packedBed::packNew(const dem::BedRecipe& r)
     }
     Info<< " at random in " << r.region.xMax - r.region.xMin << " x "
         << r.region.yMax - r.region.yMin << " m (seed " << label(r.seed)
-        << "), then " << r.settleTime << " s of settling" << endl;
+        << "), then " << r.settleTime << " s of settling";
+    if (r.settleFriction)
+    {
+        Info<< " with sliding friction " << *r.settleFriction
+            << " on every contact (their own after)";
+    }
+    Info<< endl;
 
     // A bed of 10^4 spheres settles for many minutes: say how far it is, every 0.1 s
     // of settling (the report does not change the bed).

@@ -9,11 +9,78 @@ License
     see the file LICENSE.
 -------------------------------------------------------------------------------
     packedBed: the bed's recipe of initialBed (counts, packing region, seed,
-    settling) and its placed particles (initialBed/place).
+    settling, the settle friction) and its placed particles
+    (initialBed/place).
 \*---------------------------------------------------------------------------*/
 
 #include "packedBed.H"
 #include "mathematicalConstants.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- initialBed/settleFriction of `bed` (in `file`): none if absent, else a
+//  finite number >= 0; a FatalIOError naming the file, the entry and the
+//  range otherwise (a negative value, nan, inf, a word, several tokens, a
+//  dictionary)
+std::optional<double> settleFriction
+(
+    const dictionary& bed,
+    const fileName& file
+)
+{
+    const entry* e = bed.findEntry("settleFriction", keyType::LITERAL);
+    if (!e)
+    {
+        return std::nullopt;
+    }
+    const char* meaning =
+        ": the sliding friction coefficient of every contact while the bed"
+        " settles (leave it out for the contacts' own)";
+    if (e->isStream())
+    {
+        ITstream& is = e->stream();
+        if (is.size() == 1 && is[0].isNumber())
+        {
+            const scalar mu = is[0].number();
+            if (std::isfinite(mu) && mu >= 0)
+            {
+                return mu;
+            }
+            FatalIOErrorInFunction(bed)
+                << "Entry 'settleFriction' = " << mu << " in initialBed of "
+                << file << " is outside the allowed range [0, inf)"
+                << meaning << exit(FatalIOError);
+        }
+    }
+    OStringStream text;
+    if (e->isStream())
+    {
+        ITstream& is = e->stream();
+        forAll(is, k)
+        {
+            text<< (k ? " " : "") << is[k];
+        }
+    }
+    else
+    {
+        text<< "a dictionary";
+    }
+    FatalIOErrorInFunction(bed)
+        << "Entry 'settleFriction' = " << text.str().c_str()
+        << " in initialBed of " << file << " is not a finite number in the"
+        << " allowed range [0, inf)" << meaning << exit(FatalIOError);
+    return std::nullopt;
+}
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -92,6 +159,7 @@ dem::BedRecipe Foam::packedBed::recipe() const
     r.settleTime = bed.lookupOrDefault<scalar>("settleTime", 1.0);
     r.keTolerance = 0;
     r.placed = placed(r);
+    r.settleFriction = settleFriction(bed, dict_.name());
     return r;
 }
 

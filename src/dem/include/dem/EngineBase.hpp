@@ -93,8 +93,9 @@ public:
     const std::vector<Wall>& walls() const { return walls_; }
 
     /// The recipe's placed particles (layPlacedParticles), Derived::packRest of the rest,
-    /// then settle into an empty box as `recipe` says; the recipe is kept and saved with the
-    /// state. Returns the settling time spent, s.
+    /// then settle into an empty box as `recipe` says, every law's sliding friction the
+    /// recipe's settleFriction meanwhile if set (the laws' own after); the recipe is kept and
+    /// saved with the state. Returns the settling time spent, s.
     double packBed(const BedRecipe& recipe, const SettleProgress& progress = {});
     /// One DEM step; with fluid = false the fluid inputs are ignored.
     void step(bool fluid);

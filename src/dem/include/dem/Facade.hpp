@@ -144,9 +144,10 @@ struct PlacedParticle {
 };
 
 /// How a bed was made: the placed particles laid first, then packRandom of the rest of
-/// countPerClass in region with seed, then settle(settleTime, keTolerance). Saved with the
-/// state (Simulation::packBed), so that a case that reuses the bed can check it was made for
-/// its particles (Simulation::loadBed).
+/// countPerClass in region with seed, then settle(settleTime, keTolerance), with every
+/// contact's sliding friction settleFriction if set. Saved with the state
+/// (Simulation::packBed), so that a case that reuses the bed can check it was made for its
+/// particles (Simulation::loadBed).
 struct BedRecipe {
     std::vector<int> countPerClass;    ///< particles of each class, the placed ones included
     Box region;                        ///< packing region, m
@@ -158,6 +159,11 @@ struct BedRecipe {
     /// class's placed particles count toward, and must not exceed, its count. A class with a
     /// distribution gives its placed particles its first diameters drawn.
     std::vector<PlacedParticle> placed{};
+    /// The sliding friction coefficient of every contact (particle pairs, those of
+    /// ContactSettings::pairs too, and particle-wall) while the bed settles, >= 0; the
+    /// contacts' own once it has settled. Not set: their own throughout. Rolling friction
+    /// keeps its own values.
+    std::optional<double> settleFriction{};
 };
 
 /// Throws dem::Error naming the placed particle (its number, class, position) and the
@@ -245,8 +251,10 @@ public:
     void packRandom(const std::vector<int>& countPerClass, const Box& region, std::uint64_t seed);
 
     /// Packs and settles a bed as `recipe` says (the placed particles, packRandom of the
-    /// rest, then settle) in an empty simulation, and keeps the recipe: save() records it with the bed. Returns the time
-    /// spent settling, s. `progress`, if given, is called as settle() calls it.
+    /// rest, then settle, with its settleFriction if set) in an empty simulation, and keeps
+    /// the recipe: save() records it with the bed. The contacts run with their own friction
+    /// after. Returns the time spent settling, s. `progress`, if given, is called as settle()
+    /// calls it.
     double packBed(const BedRecipe& recipe, const SettleProgress& progress = {});
 
     /// Adds one particle of the class's (mean) diameter; throws if outside the box or

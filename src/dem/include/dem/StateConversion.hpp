@@ -14,8 +14,8 @@ namespace dem {
 inline constexpr const char* stateConverter = "dpmConvertState";
 
 /// The current versions, written by save() and the only ones load() reads.
-inline constexpr std::uint32_t discStateVersion = 8;
-inline constexpr std::uint32_t slabStateVersion = 6;
+inline constexpr std::uint32_t discStateVersion = 9;
+inline constexpr std::uint32_t slabStateVersion = 7;
 /// The oldest versions the converter reads.
 inline constexpr std::uint32_t oldestDiscStateVersion = 2;
 inline constexpr std::uint32_t oldestSlabStateVersion = 1;
@@ -34,9 +34,10 @@ struct StateConversion {
 /// The command line that converts `path` in place, for messages.
 std::string convertCommand(const std::string& path);
 
-/// Reads the state at `in` (2D versions 2-7, slab versions 1-5) and writes it at `out` in
+/// Reads the state at `in` (2D versions 2-8, slab versions 1-6) and writes it at `out` in
 /// the current version of its engine: the same particles, contacts and counters, with what
-/// the older version did not carry set as its load did (a bed recipe without placed
+/// the older version did not carry set as its load did (a bed recipe without a settle
+/// friction, settled with the contacts' own; 2D before 8 and slab before 6: without placed
 /// particles; 2D before 6 and slab before 4: no run record; no bed recipe, the adaptive skin's clock at the file's step; 2D version 2:
 /// the neighbour list rebuilt on the first step; slab versions 1-2: the skin 0.1 d_min)
 /// and the settings key's contact entries as the earlier versions ran: the contact law of

@@ -6,6 +6,7 @@
 
 #include "dem/Facade.hpp"
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -40,7 +41,8 @@ std::vector<double> settingsKey(const Settings& s, double skin);
 std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
                                             const std::vector<double>& here, const Settings& s);
 
-/// The entries of two bed recipes that differ, classes named after `s`.
+/// The entries of two bed recipes that differ, classes named after `s` (this and the bed
+/// recipe's other functions below: BedRecord.cpp).
 std::vector<Difference> compareRecipes(const BedRecipe& inFile, const BedRecipe& here,
                                        const Settings& s);
 
@@ -50,12 +52,19 @@ std::vector<double> placedRecord(const BedRecipe& recipe);
 /// The placed particles of such a record; false if its length is not a multiple of five.
 bool placedOfRecord(const std::vector<double>& record, std::vector<PlacedParticle>& placed);
 
+/// A recipe's settle friction as a state file stores it: none (not set) or one value.
+std::vector<double> settleFrictionRecord(const BedRecipe& recipe);
+/// The settle friction of such a record; false if it holds more than one value.
+bool settleFrictionOfRecord(const std::vector<double>& record,
+                            std::optional<double>& settleFriction);
+
 /// Counts per class of the particles against those wanted, classes named after `s`.
 std::vector<Difference> compareCounts(const std::vector<int>& inFile, const std::vector<int>& here,
                                       const Settings& s);
 
 /// Throws unless a bed can be packed as `recipe` says into a simulation holding `particles`
-/// particles (it must be empty; settling time and tolerance finite and >= 0).
+/// particles (it must be empty; settling time, tolerance and settle friction if set finite
+/// and >= 0).
 void checkPackBed(std::size_t particles, const BedRecipe& recipe);
 
 /// What differs between a loaded bed and the recipe wanted here: the file's recipe against
