@@ -32,18 +32,6 @@ Settings settings()
     return s;
 }
 
-std::string bytesOf(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void writeBytes(const std::string& path, const std::string& bytes)
-{
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
-
 /// A packed bed saved to `path`.
 void saveBed(const std::string& path, const BedRecipe& r = smallBedRecipe())
 {
@@ -176,7 +164,7 @@ TEST(BedRecord, ConvertedVersionThreeBedIsCheckedOnItsCounts)
     sim.packRandom(smallBedRecipe().countPerClass, smallBedRecipe().region, 42);
     EXPECT_EQ(sim.recipe(), nullptr);
     sim.save(path);
-    std::string bytes = bytesOf(path);
+    std::string bytes = readBytes(path);
     bytes.erase(bytes.size() - 24, 8);
     std::uint64_t recordLength;
     std::memcpy(&recordLength, &bytes[20], sizeof(recordLength));
@@ -237,7 +225,7 @@ TEST(BedRecord, FailedWriteNamesFileAndReasonAndKeepsTheEarlierState)
     fs::create_directories(dir);
     const std::string path = dir + "/bed.state";
     saveBed(path);
-    const std::string before = bytesOf(path);
+    const std::string before = readBytes(path);
 
     // The temporary cannot be created (a directory is in its place).
     fs::create_directory(path + ".tmp");
@@ -246,7 +234,7 @@ TEST(BedRecord, FailedWriteNamesFileAndReasonAndKeepsTheEarlierState)
     std::string what = errorOf([&] { other.save(path); });
     EXPECT_NE(what.find("cannot write state file '" + path + "'"), std::string::npos) << what;
     EXPECT_NE(what.find("Is a directory"), std::string::npos) << what;
-    EXPECT_EQ(bytesOf(path), before);
+    EXPECT_EQ(readBytes(path), before);
     fs::remove(path + ".tmp");
 
     // The target is a directory: the rename fails, no stray temporary is left.

@@ -132,12 +132,6 @@ Settings withPair(Settings s, double e, double muR = 0.0)
     return s;
 }
 
-std::string bytesOf(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 } // namespace
 
 // A pair's and a class-wall contact's own coefficients are in the record: a bed or a restart
@@ -215,7 +209,7 @@ TEST(ContactRecord, OwnCoefficientsEqualToTheGlobalOnesWriteTheSameFile)
         with.packBed(smallBedRecipe());
         without.save(a);
         with.save(b);
-        EXPECT_TRUE(bytesOf(a) == bytesOf(b));
+        EXPECT_TRUE(readBytes(a) == readBytes(b));
         EXPECT_EQ(loadedUnder(base, same, "bedSame.state"), "");
         EXPECT_EQ(loadedUnder(same, base, "bedSame.state"), "");
         std::remove(a.c_str());

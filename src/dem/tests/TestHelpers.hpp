@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace dem::test {
@@ -45,6 +47,19 @@ inline BedRecipe smallBedRecipe()
 
 /// A file name in the test's temporary directory.
 inline std::string tempPath(const std::string& name) { return testing::TempDir() + name; }
+
+/// A file's whole content.
+inline std::string readBytes(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// Replaces a file's content with `bytes`.
+inline void writeBytes(const std::string& path, const std::string& bytes)
+{
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
 
 /// The message of the dem::Error that `call` throws ("" if none).
 template <class Call> std::string errorOf(Call&& call)

@@ -42,17 +42,6 @@ BedRecipe recipeWith(std::optional<double> settleFriction)
     return r;
 }
 
-std::string bytesOf(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void writeBytes(const std::string& path, const std::string& bytes)
-{
-    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
-}
-
 bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
 std::string engineName(int dimension) { return dimension == 2 ? "2D" : "slab"; }
@@ -163,17 +152,17 @@ TEST(SettleFrictionRecord, AnOlderBedLoadsAsSettledWithTheContactsOwn)
         Simulation made(settingsOf(dimension));
         made.packBed(recipeWith(std::nullopt));
         made.save(path);
-        const std::string b = bytesOf(path);
+        const std::string b = readBytes(path);
         const std::uint32_t previous = (dimension == 2 ? discStateVersion : slabStateVersion) - 1;
         std::string expected;
         writeBytes(path, dimension == 2 ? olderDisc(b, previous, expected)
                                         : olderSlab(b, previous, expected, dSmall));
-        EXPECT_EQ(get<std::uint32_t>(bytesOf(path), 16), previous);
-        EXPECT_LT(bytesOf(path).size(), b.size());   // 8 bytes fewer: no settle friction
+        EXPECT_EQ(get<std::uint32_t>(readBytes(path), 16), previous);
+        EXPECT_LT(readBytes(path).size(), b.size());   // 8 bytes fewer: no settle friction
 
         const StateConversion c = convertState(path, path);
         EXPECT_EQ(c.fromVersion, previous);
-        EXPECT_TRUE(bytesOf(path) == b);
+        EXPECT_TRUE(readBytes(path) == b);
 
         Simulation used(settingsOf(dimension));
         EXPECT_TRUE(used.loadBed(path, recipeWith(std::nullopt)));

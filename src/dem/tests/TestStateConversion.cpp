@@ -50,17 +50,6 @@ std::string fileName(const std::string& tag)
     return ::testing::TempDir() + "stateConversion_" + tag + ".state";
 }
 
-std::string readAll(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void writeAll(const std::string& path, const std::string& bytes)
-{
-    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
-}
-
 /// A packed bed (with its recipe), stepped a little: contacts, history, a list in groups.
 std::string savedBed(int dimension, const std::string& path)
 {
@@ -69,7 +58,7 @@ std::string savedBed(int dimension, const std::string& path)
     sim.packBed(r);
     sim.advance(0.0005);
     sim.save(path);
-    return readAll(path);
+    return readBytes(path);
 }
 
 
@@ -88,7 +77,7 @@ TEST(StateConversion, EveryOlderDiscVersionBecomesTheCurrentWritersBytes)
         std::string expected;
         const std::string old = fileName("disc" + std::to_string(version));
         const std::string converted = old + ".converted";
-        writeAll(old, olderDisc(b, version, expected));
+        writeBytes(old, olderDisc(b, version, expected));
 
         // Refused by the engine, naming the version and the command
         Simulation refused(settingsOf(2));
@@ -102,7 +91,7 @@ TEST(StateConversion, EveryOlderDiscVersionBecomesTheCurrentWritersBytes)
         EXPECT_EQ(c.dimension, 2);
         EXPECT_EQ(c.fromVersion, version);
         EXPECT_EQ(c.toVersion, discStateVersion);
-        EXPECT_TRUE(readAll(converted) == expected);
+        EXPECT_TRUE(readBytes(converted) == expected);
         if (version == discStateVersion - 1) {
             EXPECT_TRUE(expected == b);   // nothing missing
         }
@@ -124,7 +113,7 @@ TEST(StateConversion, EveryOlderSlabVersionBecomesTheCurrentWritersBytes)
         std::string expected;
         const std::string old = fileName("slab" + std::to_string(version));
         const std::string converted = old + ".converted";
-        writeAll(old, olderSlab(b, version, expected, dSmall));
+        writeBytes(old, olderSlab(b, version, expected, dSmall));
 
         Simulation refused(settingsOf(3));
         const std::string e = errorOf([&] { refused.load(old); });
@@ -136,7 +125,7 @@ TEST(StateConversion, EveryOlderSlabVersionBecomesTheCurrentWritersBytes)
         const StateConversion c = convertState(old, converted);
         EXPECT_EQ(c.dimension, 3);
         EXPECT_EQ(c.fromVersion, version);
-        EXPECT_TRUE(readAll(converted) == expected);
+        EXPECT_TRUE(readBytes(converted) == expected);
         if (version == slabStateVersion - 1) {
             EXPECT_TRUE(expected == b);
         }
@@ -165,7 +154,7 @@ TEST(StateConversion, CurrentUnknownAndForeignFilesAreNamed)
     std::string unknown = b;
     put(unknown, 16, std::uint32_t{10});
     put(unknown, unknown.size() - 24, fnv1a64(unknown.data(), unknown.size() - 24));
-    writeAll(current, unknown);
+    writeBytes(current, unknown);
     EXPECT_TRUE(has(errorOf([&] { convertState(current, out); }),
                     "state file '" + current + "' is not a valid DEM state: 2D state version 10, "
                     "expected 2 to 9"));
@@ -173,13 +162,13 @@ TEST(StateConversion, CurrentUnknownAndForeignFilesAreNamed)
     EXPECT_TRUE(has(errorOf([&] { sim.load(current); }),
                     "state file '" + current + "' is not a valid DEM state: version 10, expected 9"));
 
-    writeAll(current, "a bed of particles, in words");
+    writeBytes(current, "a bed of particles, in words");
     EXPECT_TRUE(has(errorOf([&] { convertState(current, out); }), "wrong file type"));
 
     // An older file cut short: named, nothing written
     std::string expected;
     std::string old = olderDisc(b, 5, expected);
-    writeAll(current, old.substr(0, old.size() / 2));
+    writeBytes(current, old.substr(0, old.size() / 2));
     EXPECT_TRUE(has(errorOf([&] { convertState(current, out); }),
                     "state file '" + current + "' is not a valid DEM state: "));
     EXPECT_FALSE(std::filesystem::exists(out));
@@ -192,13 +181,13 @@ TEST(StateConversion, TheCommandConvertsInPlaceAndKeepsTheOriginal)
     std::string expected;
     const std::string old = olderDisc(b, 3, expected);
     const std::string path = fileName("command3");
-    writeAll(path, old);
+    writeBytes(path, old);
     const std::string log = path + ".log";
     const std::string command = std::string(DEM_CONVERT_STATE) + " " + path + " >" + log + " 2>&1";
-    ASSERT_EQ(std::system(command.c_str()), 0) << readAll(log);
-    EXPECT_TRUE(readAll(path) == expected);
-    EXPECT_TRUE(readAll(path + ".version3") == old);
-    const std::string said = readAll(log);
+    ASSERT_EQ(std::system(command.c_str()), 0) << readBytes(log);
+    EXPECT_TRUE(readBytes(path) == expected);
+    EXPECT_TRUE(readBytes(path + ".version3") == old);
+    const std::string said = readBytes(log);
     EXPECT_TRUE(has(said, "Converted '" + path + "' (2D state version 3) to '" + path
                           + "' (version 9)")
                 && has(said, "Note: it carries no checksum: its integrity could not be checked"))
@@ -206,12 +195,12 @@ TEST(StateConversion, TheCommandConvertsInPlaceAndKeepsTheOriginal)
 
     const std::string usage = std::string(DEM_CONVERT_STATE) + " >" + log + " 2>&1";
     EXPECT_NE(std::system(usage.c_str()), 0);
-    EXPECT_TRUE(has(readAll(log), "Usage: dpmConvertState <in> [<out>]")) << readAll(log);
+    EXPECT_TRUE(has(readBytes(log), "Usage: dpmConvertState <in> [<out>]")) << readBytes(log);
 
     const std::string missing = std::string(DEM_CONVERT_STATE) + " " + path + ".none >" + log + " 2>&1";
     EXPECT_NE(std::system(missing.c_str()), 0);
-    EXPECT_TRUE(has(readAll(log), "dpmConvertState: cannot open state file '" + path + ".none'"))
-        << readAll(log);
+    EXPECT_TRUE(has(readBytes(log), "dpmConvertState: cannot open state file '" + path + ".none'"))
+        << readBytes(log);
 }
 
 TEST(StateConversion, InPlaceWithABackupNameThatIsADirectoryIsRefusedCleanly)
@@ -222,16 +211,16 @@ TEST(StateConversion, InPlaceWithABackupNameThatIsADirectoryIsRefusedCleanly)
     std::string expected;
     const std::string old = olderDisc(b, 3, expected);
     const std::string path = fileName("backupDir3");
-    writeAll(path, old);
+    writeBytes(path, old);
     std::filesystem::remove_all(path + ".version3");
     std::filesystem::create_directory(path + ".version3");
     const std::string log = path + ".log";
     const std::string command = std::string(DEM_CONVERT_STATE) + " " + path + " >" + log + " 2>&1";
     EXPECT_NE(std::system(command.c_str()), 0);
-    const std::string said = readAll(log);
+    const std::string said = readBytes(log);
     EXPECT_TRUE(has(said, "cannot keep the original '" + path + "' as '" + path + ".version3'")
                 && has(said, "is a directory") && has(said, "nothing converted")) << said;
-    EXPECT_TRUE(readAll(path) == old);
+    EXPECT_TRUE(readBytes(path) == old);
     EXPECT_FALSE(std::filesystem::exists(path + ".converting"));
     std::filesystem::remove_all(path + ".version3");
 }
@@ -251,13 +240,13 @@ TEST(StateConversion, PreviousVersionContinuesWithTheSameBits)
         run.advance(0.0005);
         run.setRunRecord("dragModel Beetstra\n");
         run.save(path);
-        const std::string b = readAll(path);
+        const std::string b = readBytes(path);
         std::string expected;
         const std::string old = path + ".previous";
-        writeAll(old, dimension == 2 ? olderDisc(b, previous, expected)
+        writeBytes(old, dimension == 2 ? olderDisc(b, previous, expected)
                                      : olderSlab(b, previous, expected, dSmall));
         const StateConversion c = convertState(old, old + ".converted");
-        EXPECT_TRUE(readAll(old + ".converted") == b);
+        EXPECT_TRUE(readBytes(old + ".converted") == b);
         EXPECT_TRUE(has(c.notes, "written as contactLaw linear (the default), "
                                  "tangentialDampingRatio 1, rollingFriction and "
                                  "rollingFrictionWall 0"))
@@ -280,8 +269,8 @@ TEST(StateConversion, PreviousVersionContinuesWithTheSameBits)
         // A run record of HertzMindlin: the law kept, a linear run refuses the file
         run.setRunRecord("dragModel Beetstra\ncontactLaw HertzMindlin\n");
         run.save(path);
-        const std::string hertz = readAll(path);
-        writeAll(old, dimension == 2 ? olderDisc(hertz, previous, expected)
+        const std::string hertz = readBytes(path);
+        writeBytes(old, dimension == 2 ? olderDisc(hertz, previous, expected)
                                      : olderSlab(hertz, previous, expected, dSmall));
         const StateConversion h = convertState(old, old + ".converted");
         EXPECT_TRUE(has(h.notes, "written as contactLaw HertzMindlin (its run record's)"))
@@ -306,7 +295,7 @@ TEST(StateConversion, ConvertedStateIsOfTheGlobalCoefficients)
         const std::string b = savedBed(dimension, path);
         std::string expected;
         const std::string old = path + ".previous";
-        writeAll(old, dimension == 2 ? olderDisc(b, previous, expected)
+        writeBytes(old, dimension == 2 ? olderDisc(b, previous, expected)
                                      : olderSlab(b, previous, expected, dSmall));
         convertState(old, old + ".converted");
 

@@ -55,17 +55,6 @@ std::string savedState(const Settings& s, const std::string& tag)
     return path;
 }
 
-std::string readAll(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void writeAll(const std::string& path, const std::string& bytes)
-{
-    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
-}
-
 /// The checksum written anew, as a file edited on purpose would have it (so that only the
 /// particle checks can find the fault).
 void resign(std::string& bytes)
@@ -132,27 +121,27 @@ TEST(StateIntegrity, DamagedFilesAreRefusedNamingTheDamage)
 {
     for (const Settings& s : {discSettings(), slabSettings()}) {
         const std::string path = savedState(s, "damaged" + std::to_string(s.dimension));
-        const std::string good = readAll(path);
+        const std::string good = readBytes(path);
         ASSERT_GT(good.size(), 3u * 4096u);
         EXPECT_EQ(loadError(s, path), "");
 
         std::string flipped = good;
         flipped[good.size() / 2] ^= 0x10;
-        writeAll(path, flipped);
+        writeBytes(path, flipped);
         std::string e = loadError(s, path);
         EXPECT_TRUE(has(e, path) && has(e, "damaged: its checksum does not match")) << e;
 
         std::string zeroed = good;
         std::memset(&zeroed[good.size() / 3], 0, 4096);
-        writeAll(path, zeroed);
+        writeBytes(path, zeroed);
         e = loadError(s, path);
         EXPECT_TRUE(has(e, path) && has(e, "damaged: its checksum does not match")) << e;
 
-        writeAll(path, good + "some garbage\n");
+        writeBytes(path, good + "some garbage\n");
         e = loadError(s, path);
         EXPECT_TRUE(has(e, path) && has(e, "damaged: 13 bytes follow its end")) << e;
 
-        writeAll(path, good.substr(0, good.size() - 5000));
+        writeBytes(path, good.substr(0, good.size() - 5000));
         e = loadError(s, path);
         EXPECT_TRUE(has(e, path) && has(e, "damaged: it does not end with its checksum")) << e;
     }
@@ -165,27 +154,27 @@ TEST(StateIntegrity, ADamagedVersionFieldOrEndMarkerIsNamedAsDamage)
     // in a file of full length is damage, not a cut
     for (const Settings& s : {discSettings(), slabSettings()}) {
         const std::string path = savedState(s, "version" + std::to_string(s.dimension));
-        const std::string good = readAll(path);
+        const std::string good = readBytes(path);
         std::uint32_t version = 0;
         std::memcpy(&version, &good[16], sizeof(version));
         for (std::uint32_t bit : {1u, 4u, 64u}) {
             std::string flipped = good;
             const std::uint32_t other = version ^ bit;
             std::memcpy(&flipped[16], &other, sizeof(other));
-            writeAll(path, flipped);
+            writeBytes(path, flipped);
             const std::string e = loadError(s, path);
             EXPECT_TRUE(has(e, path) && has(e, "damaged: its version field reads " + std::to_string(other))
                         && !has(e, "convert")) << e;
         }
         std::string marker = good;
         marker[good.size() - 3] ^= 0x01;
-        writeAll(path, marker);
+        writeBytes(path, marker);
         std::string e = loadError(s, path);
         EXPECT_TRUE(has(e, path) && has(e, "damaged: its end marker is overwritten (1 of its 16")
                     && has(e, "contents before it intact") && !has(e, "truncated")) << e;
         std::string zeroed = good;
         std::memset(&zeroed[good.size() - 16], 0, 16);
-        writeAll(path, zeroed);
+        writeBytes(path, zeroed);
         e = loadError(s, path);
         EXPECT_TRUE(has(e, "damaged: its end marker is overwritten") && !has(e, "truncated")) << e;
         std::remove(path.c_str());
@@ -220,19 +209,19 @@ TEST(StateIntegrity, BadParticlesAreRefusedNamingThem)
         const std::string path = savedState(s, "particles" + std::to_string(s.dimension));
         Simulation sim(s);
         sim.load(path);
-        const std::string good = readAll(path);
+        const std::string good = readBytes(path);
 
         std::string bytes = good;
         setDouble(bytes, xOffset(good, sim, 5), std::numeric_limits<double>::quiet_NaN());
         resign(bytes);
-        writeAll(path, bytes);
+        writeBytes(path, bytes);
         std::string e = loadError(s, path);
         EXPECT_TRUE(has(e, path) && has(e, "particle 5 has a position that is not a finite number")) << e;
 
         bytes = good;
         setDouble(bytes, xOffset(good, sim, 9), box.xMax + 0.001);
         resign(bytes);
-        writeAll(path, bytes);
+        writeBytes(path, bytes);
         e = loadError(s, path);
         EXPECT_TRUE(has(e, "particle 9 at (0.031,") && has(e, "is outside the box [0, 0.03] x [0, 0.1]")) << e;
 
@@ -247,7 +236,7 @@ TEST(StateIntegrity, BadParticlesAreRefusedNamingThem)
             setDouble(bytes, x1 + axis * stride, v0);
         }
         resign(bytes);
-        writeAll(path, bytes);
+        writeBytes(path, bytes);
         e = loadError(s, path);
         EXPECT_TRUE(has(e, "particles 0 at") && has(e, "and 1 at")
                     && has(e, "closer than half the sum of their radii")) << e;

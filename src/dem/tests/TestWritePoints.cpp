@@ -24,12 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string readAll(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 /// What the hook saw at one point: the bytes of the temporary and of the file's name.
 struct Seen {
     std::string point, temporary, named;
@@ -40,7 +34,7 @@ std::vector<Seen> seen;
 
 void record(const char* point)
 {
-    seen.push_back({point, readAll(savedPath + ".tmp"), readAll(savedPath)});
+    seen.push_back({point, readBytes(savedPath + ".tmp"), readBytes(savedPath)});
 }
 
 Settings engineSettings(int dimension)
@@ -62,7 +56,7 @@ void checkPoints(int dimension)
     EXPECT_GT(sim.contactCount(), 0u);
     savedPath = testing::TempDir() + "demWritePoints" + std::to_string(dimension) + ".state";
     sim.save(savedPath);
-    const std::string earlier = readAll(savedPath);
+    const std::string earlier = readBytes(savedPath);
     sim.advance(1e-3);
 
     seen.clear();
@@ -70,7 +64,7 @@ void checkPoints(int dimension)
     EXPECT_EQ(before, nullptr);   // none by default
     sim.save(savedPath);
     EXPECT_EQ(setWritePointHook(nullptr), record);
-    const std::string finished = readAll(savedPath);
+    const std::string finished = readBytes(savedPath);
 
     ASSERT_EQ(seen.size(), 2u);
     EXPECT_EQ(seen[0].point, "stateWrite.part");
