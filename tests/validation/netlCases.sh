@@ -3,8 +3,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The cases of benchmarks/netlSegregationValidation (caseFunctions) against
 # the experiment of LaMarche et al. (2022): each condition's U0, glass count
-# (its bed mass over one bead's, 2522 kg/m3 and 3.101 mm), intruders and
-# seed; a variant's entries and its shift ('add': U0plus0.10 gives 1.93 and
+# (its bed mass over one bead's, 2522 kg/m3 and 3.101 mm), intruders, their
+# diameter (large 9.43 mm, small 3.155 mm) and seed, the held-out five too; a variant's entries and its shift ('add': U0plus0.10 gives 1.93 and
 # 2.234 m/s); variants joined by '+'; sweepUmf's case records the inlet's
 # pressure every 1 ms in place of the early end. Cases only: no solver runs.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
@@ -17,10 +17,12 @@ same() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a - b < 1e-9 && b - a < 1e-9) }
 
 # The glass count: the bed's mass over one bead's
 beads() { awk -v m="$1" 'BEGIN { printf "%d", m / (2522 * 3.14159265358979 / 6 * 3.101e-3^3) + 0.5 }'; }
-for row in "U214_M177_4L 2.134 177.46e-3 4" "U183_M177_1L 1.83 177.46e-3 1" \
-           "U183_M227_1L 1.83 227.47e-3 1"
+for row in "U214_M177_4L 2.134 177.46e-3 4 9.43e-3" "U183_M177_1L 1.83 177.46e-3 1 9.43e-3" \
+           "U183_M227_1L 1.83 227.47e-3 1 9.43e-3" "U183_M177_4L 1.83 177.46e-3 4 9.43e-3" \
+           "U183_M227_4L 1.83 227.47e-3 4 9.43e-3" "U199_M177_2L 1.99 177.46e-3 2 9.43e-3" \
+           "U214_M177_2L 2.134 177.46e-3 2 9.43e-3" "U214_M177_2S 2.134 177.46e-3 2 3.155e-3"
 do
-    read -r c U0 mass intruders <<<"$row"
+    read -r c U0 mass intruders diameter <<<"$row"
     variant=""
     makeCase "$c" 3 "$c" || fail "$c: case not made"
     same "$(value $c U0 constant/gasProperties)" "$U0" || fail "$c: U0 $(value $c U0 constant/gasProperties), not $U0"
@@ -29,9 +31,11 @@ do
     [ "$(value $c classes.intruder.count constant/particleProperties)" = "$intruders" ] \
         && [ "$(value $c initialBed.place.intruder.random constant/particleProperties)" = "$intruders" ] \
         || fail "$c: not $intruders intruders placed at random"
+    same "$(value $c classes.intruder.diameter constant/particleProperties)" "$diameter" \
+        || fail "$c: intruders of $(value $c classes.intruder.diameter constant/particleProperties) m, not $diameter"
     [ "$(value $c initialBed.seed constant/particleProperties)" = 3 ] || fail "$c: seed"
     grep -q "nCells: 384$" "$c/log.blockMesh" || fail "$c: mesh not 4 x 24 x 4"
-    pass "$c: U0 $U0 m/s, $(beads "$mass") glass beads, $intruders intruders, seed 3"
+    pass "$c: U0 $U0 m/s, $(beads "$mass") glass beads, $intruders intruders of $diameter m, seed 3"
 done
 
 variant=U0plus0.10

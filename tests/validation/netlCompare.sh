@@ -10,10 +10,11 @@
 # seed whose lower bound lies above; undecided for one whose bound does
 # not), the surface's bracket with its censored bound, the trends (holds,
 # not shown, undecided with a censored seed in either condition where it
-# would not hold, or in the faster one where it would), the count of
-# criteria met and the per-seed record.
-# Then the experiment's means and intervals from its own files against the
-# table of LaMarche et al. (2022) in the reference folder's SOURCES.md.
+# would not hold, or in the faster one where it would; the held-out
+# conditions' two), the count of criteria met and the per-seed record.
+# Then the experiment's means and intervals from its own files, all eight
+# conditions, against the table of LaMarche et al. (2022) in the reference
+# folder's SOURCES.md.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 compare=$testsDir/../benchmarks/netlSegregationValidation/compare.py
 reference=$testsDir/../../shared/reference/netlSegregation2022/measurements
@@ -61,6 +62,17 @@ for k, t in enumerate((7, 8, nan)):
     seed("fasterCensored", "U183_M177_1L_seed%d" % (k + 1), 24, [[t, t, t]])
 for k, t in enumerate((60, 61, 62)):
     seed("fasterCensored", "U183_M227_1L_seed%d" % (k + 1), 72, [[t, t, t]])
+# the held-out conditions' trends: small intruders 1 s later than large (not
+# shown by three seeds of spread 1), four at 1.83 m/s 3 s later than at 2.134
+table("experiment/U214_M177_2L.txt", [[5, 6], [6, 7], [7, 8]])
+table("experiment/U214_M177_2S.txt", [[9, 10], [10, 11], [11, 12]])
+table("experiment/U183_M177_4L.txt", [[7, 8, 9, 10], [8, 9, 10, 11], [9, 10, 11, 12]])
+for k, t in enumerate((5, 6, 7)):
+    seed("heldOut", "U214_M177_2L_seed%d" % (k + 1), 24, [[t, t, t], [t + 1, t + 1, t + 1]])
+    seed("heldOut", "U214_M177_2S_seed%d" % (k + 1), 36, [[t + 1, t + 1, t + 1], [t + 2, t + 2, t + 2]])
+for k, t in enumerate((9, 10, 11)):
+    seed("heldOut", "U214_M177_4L_seed%d" % (k + 1), 24, [[t + j, t + j, t + j] for j in range(4)])
+    seed("heldOut", "U183_M177_4L_seed%d" % (k + 1), 30, [[t + 3 + j] * 3 for j in range(4)])
 PY
 
 py "$compare" run -reference experiment -figure rise.png > log.compare 2>&1 \
@@ -137,6 +149,16 @@ py "$compare" fasterCensored -reference experiment > log.fasterCensored 2>&1 \
     || { cat log.fasterCensored; fail "compare.py on a censored faster condition"; }
 grep -q "heavier bed rises slower, simulated: .* = 48.00 +- .*: undecided (censored seeds)" \
     log.fasterCensored || fail "a trend whose faster condition is censored: $(cat log.fasterCensored)"
+py "$compare" heldOut -reference experiment > log.heldOut 2>&1 \
+    || { cat log.heldOut; fail "compare.py on the held-out conditions"; }
+welch=$(awk 'BEGIN { printf "%.2f", 2.776445 * sqrt(2 / 3) }')
+for line in "small intruders rise slower, simulated: t_r(1) U214_M177_2S - U214_M177_2L = 1.00 +- $welch s: not shown" \
+            "small intruders rise slower, experiment: t_r(1) U214_M177_2S - U214_M177_2L = 4.00 +- $welch s: holds" \
+            "slower gas rises slower, four intruders, simulated: t_r(1) U183_M177_4L - U214_M177_4L = 3.00 +- $welch s: holds" \
+            "slower gas rises slower, four intruders, experiment: t_r(1) U183_M177_4L - U214_M177_4L = 3.00 +- $welch s: holds"
+do
+    grep -qF "$line" log.heldOut || fail "held-out trend: '$line' not in $(cat log.heldOut)"
+done
 
 # heights.py on particle files with known heights: 100 glass centres at
 # 1..100 mm (99 % below 99.01 mm, numpy's linear quantile), two intruders
@@ -170,11 +192,20 @@ then
     do
         cp -r run/${c}_seed1 published/ || fail "copy"
     done
+    for c in U183_M177_4L U183_M227_4L U199_M177_2L U214_M177_2L U214_M177_2S
+    do
+        cp -r heldOut/U214_M177_4L_seed1 published/${c}_seed1 || fail "copy"
+    done
     py "$compare" published -reference "$reference" > log.published 2>&1 \
         || { cat log.published; fail "compare.py with the experiment's files"; }
     for row in "U214_M177_4L | 1 | .* | 5.15 +- 0.31" "U214_M177_4L | 2 | .* | 5.54 +- 0.49" \
                "U214_M177_4L | 3 | .* | 6.12 +- 0.61" "U214_M177_4L | 4 | .* | 7.04 +- 0.81" \
-               "U183_M177_1L | 1 | .* | 7.50 +- 0.88" "U183_M227_1L | 1 | .* | 11.92 +- 0.94"
+               "U183_M177_1L | 1 | .* | 7.50 +- 0.88" "U183_M227_1L | 1 | .* | 11.92 +- 0.94" \
+               "U183_M177_4L | 1 | .* | 7.19 +- 1.04" "U183_M177_4L | 4 | .* | 9.38 +- 1.88" \
+               "U183_M227_4L | 1 | .* | 9.21 +- 3.01" "U183_M227_4L | 4 | .* | 15.41 +- 1.80" \
+               "U199_M177_2L | 1 | .* | 5.87 +- 0.50" "U199_M177_2L | 2 | .* | 6.76 +- 0.49" \
+               "U214_M177_2L | 1 | .* | 5.49 +- 0.75" "U214_M177_2L | 2 | .* | 6.67 +- 0.84" \
+               "U214_M177_2S | 1 | .* | 9.64 +- 1.47" "U214_M177_2S | 2 | .* | 11.18 +- 1.18"
     do
         grep -q "$row |" log.published || fail "the experiment's table: '$row' not in $(cat log.published)"
     done
