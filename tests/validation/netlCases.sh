@@ -4,7 +4,8 @@
 # The cases of benchmarks/netlSegregationValidation (caseFunctions) against
 # the experiment of LaMarche et al. (2022): each condition's U0, glass count
 # (its bed mass over one bead's, 2522 kg/m3 and 3.101 mm), intruders, their
-# diameter (large 9.43 mm, small 3.155 mm) and seed, the held-out five too; a variant's entries and its shift ('add': U0plus0.10 gives 1.93 and
+# diameter (large 9.43 mm, small 3.155 mm) and seed, the held-out five too;
+# a variant's entries and its shift ('add': U0plus0.10 gives 1.93 and
 # 2.234 m/s); variants joined by '+'; sweepUmf's case records the inlet's
 # pressure every 1 ms in place of the early end. Cases only: no solver runs.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
