@@ -111,8 +111,13 @@ counts as finished, never running them again. An import refuses, naming the
 difference, a study of another studyDict and a case whose settings (other
 than its w, pressure and seed) or dictionaries differ from the study's
 cases; a case of the same name with the same settings is kept as it is.
--import then remakes results/; run the study as usual for the cases still
-to run.
+An archive is unpacked only if it holds nothing but the studyDict and
+summary cases (no links, no other files) within 64 MiB a file, 1024 MiB in
+all and 100000 members; its files get this process's modes (umask), not
+the archive's. A symbolic link among the files a summary takes from a case
+(constant/, system/, log.dpmFoam2D, the tables) is refused, naming it, at
+-export and -import alike. -import then remakes results/ (a summary case
+has no snapshot); run the study as usual for the cases still to run.
 -rateWindow T0 T1: the window (T0, T1] of M/M(0) that findings.md compares
 for the segregation rate (finding 4); default the first -mean window.
 -scale, -settleTime and -writeInterval make a reduced study for tests

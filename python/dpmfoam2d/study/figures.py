@@ -16,7 +16,7 @@ import numpy as np  # noqa: E402
 
 from .. import BIN_DIR  # noqa: E402
 from ..tables import read_postprocessing  # noqa: E402
-from . import ensemble as ens  # noqa: E402
+from . import archive as study_archive, ensemble as ens  # noqa: E402
 from ..files import own_directory, save_figure
 BASELINE = "baseline"
 
@@ -137,7 +137,8 @@ def figures(rows, ensemble, dirs, out, X, pictures=True):
 
 def snapshots(rows, groups, dirs, out):
     """Final states side by side (the paper's Fig. 2): rows w, columns p;
-    the first seed of each ensemble."""
+    the first seed of each ensemble run here (a summary case, imported,
+    has no particle files to picture)."""
     snaps = os.path.join(out, "snapshots")
     own_directory(snaps)
     for variant in OrderedDict.fromkeys(r["variant"] for r in rows):
@@ -151,7 +152,14 @@ def snapshots(rows, groups, dirs, out):
                 ax.axis("off")
                 if (variant, w, p) not in groups:
                     continue
-                first = groups[variant, w, p][0]
+                pictured = [r for r in groups[variant, w, p]
+                            if not study_archive.is_summary(dirs[r["case"]])]
+                if not pictured:
+                    print("results: no snapshot of %s: a summary case (imported), "
+                          "without particle files" % groups[variant, w, p][0]["case"],
+                          flush=True)
+                    continue
+                first = pictured[0]
                 png = os.path.join(snaps, first["case"] + ".png")
                 subprocess.run([os.path.join(BIN_DIR, "dpmSnapshot"), dirs[first["case"]],
                                 "-o", png, "-height", "700"], check=True,

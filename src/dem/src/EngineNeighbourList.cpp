@@ -62,11 +62,7 @@ void EngineBase<Derived, Traits>::rebuildNeighbourList()
         }
     }
 
-    const double cellDiameter = searchCellDiameter();
-    if (cellDiameter != cellDiameter_) {
-        cellDiameter_ = cellDiameter;
-        search_.setMinCellSize(cellDiameter_ + skin_);
-    }
+    fitSearchCells();
     Traits::findPairs(search_, p_, skin_, found_, nThreads);
 
     // Stable counting sort of the found pairs into their groups, in parallel over chunks
@@ -201,6 +197,16 @@ void EngineBase<Derived, Traits>::setSkin(double skin)
 }
 
 template <class Derived, class Traits>
+void EngineBase<Derived, Traits>::fitSearchCells()
+{
+    const double cellDiameter = searchCellDiameter();
+    if (cellDiameter != cellDiameter_) {
+        cellDiameter_ = cellDiameter;
+        search_.setMinCellSize(cellDiameter_ + skin_);
+    }
+}
+
+template <class Derived, class Traits>
 double EngineBase<Derived, Traits>::searchCellDiameter() const
 {
     const std::vector<ParticleClass>& cls = settings_.classes;
@@ -241,6 +247,7 @@ std::size_t EngineBase<Derived, Traits>::listMemoryBytes() const
     template void EngineBase<Derived, Traits>::rebuildNeighbourList();               \
     template void EngineBase<Derived, Traits>::adaptSkin(double);                    \
     template void EngineBase<Derived, Traits>::setSkin(double);                      \
+    template void EngineBase<Derived, Traits>::fitSearchCells();                     \
     template double EngineBase<Derived, Traits>::searchCellDiameter() const;         \
     template std::size_t EngineBase<Derived, Traits>::listMemoryBytes() const;
 

@@ -17,6 +17,7 @@ void EngineBase<Derived, Traits>::sortByCell()
 {
     const std::size_t n = p_.size();
     if (n == 0) return;
+    fitSearchCells();
     const CellMapper& cells = search_.mapper();
     const int nCells = cells.nRows() * cells.nColumns();
 

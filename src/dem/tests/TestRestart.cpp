@@ -131,6 +131,38 @@ TEST(Restart, OneThreadEqualsTwoThreads)
     expectIdentical(*one, *two);
 }
 
+TEST(Restart, WithAFewLargeParticlesAndSortsIsBitwiseIdentical)
+{
+    // Three discs 3.3 times the beads' diameter (0.75 % of the particles) are searched
+    // apart from the beads' grid, whose cells are then sized by the beads. The sort by
+    // cell, as the solver calls it every 3000 DEM steps (here at the restart's step, 9000,
+    // and not again before the end), must use the same cells after a load as in the
+    // uninterrupted run: the same order of the particles.
+    const std::string path = testing::TempDir() + "demRestartLarge.state";
+    Settings s = settings(1);
+    s.classes = {{"bead", dSmall, rho}, {"intruder", 5e-3, 1000.0}};
+    auto begin = [&] {
+        auto sim = std::make_unique<Simulation>(s);
+        sim->packRandom({400, 3}, {0.0, 0.03, 0.0, 0.06}, 7);
+        return sim;
+    };
+    auto run = [](Simulation& sim, int k) {
+        if (k % 300 == 0) sim.sortByCell();
+        cfdStep(sim, k);
+    };
+    auto whole = begin();
+    for (int k = 0; k < 1190; ++k) {
+        if (k == 900) whole->save(path);
+        run(*whole, k);
+    }
+    Simulation resumed(s);
+    resumed.load(path);
+    for (int k = 900; k < 1190; ++k) run(resumed, k);
+    EXPECT_GT(whole->contactCount(), 100u);
+    expectIdentical(*whole, resumed);
+    std::remove(path.c_str());
+}
+
 TEST(Restart, BadFilesAreNamed)
 {
     const std::string path = testing::TempDir() + "demBad.state";

@@ -207,6 +207,19 @@ Foam::dpmCloud::dpmCloud
             << exit(FatalIOError);
     }
 
+    if (drag_->totalForceOfMixture() && formulation_->separatePressureForce())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "dragModel " << drag_->type() << " with formulation "
+            << formulation_->type() << " in " << dict_.name()
+            << ": the closure's polydisperse correction already holds each"
+            << " particle's share of the pressure gradient, which formulation "
+            << formulation_->type() << " adds again as -V_p grad p; use"
+            << " formulation B with " << drag_->type()
+            << " (docs/theory/drag-closures.md)"
+            << exit(FatalIOError);
+    }
+
     const particleChecks checks(dict_, classNames_);
     checks.entries(mesh_.time());
     caseChecks::gravity(g_);

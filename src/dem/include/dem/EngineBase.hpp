@@ -128,7 +128,7 @@ public:
     /// largeRatio times any other: the search then tests those against every particle and
     /// sizes the cells by the rest (an intruder in a bed of beads, whose cells would
     /// otherwise hold tens of beads each).
-    /// Computed from the particles at each list build.
+    /// Computed from the particles at each list build and each sort by cell.
     double searchCellDiameter() const;
     static constexpr double largeRatio = 1.5;
     static constexpr double largeFraction = 0.01;
@@ -154,6 +154,11 @@ protected:
     void adaptSkin(double maxDisplacement2);
     /// Sets the skin and the search cells that fit it.
     void setSkin(double skin);
+    /// Sizes the search cells by searchCellDiameter() of the particles at hand. The list
+    /// build and the sort by cell both call it, so that the cells (and so the sort's order)
+    /// are a function of the particles and the skin alone: the same after a load as in
+    /// the run that saved the state.
+    void fitSearchCells();
     void setFluidForceAtCurrentVelocity(bool fluid);
     /// body(Law{}, std::bool_constant<Rolling>{}) with the contact law (LinearSpringDashpot or
     /// HertzMindlin) and the rolling resistance of the settings: the engines' contact loops
@@ -193,7 +198,7 @@ protected:
     ThreadChooser threadChooser_;
     int nClasses_;
     double smallestDiameter_, largestDiameter_;
-    double cellDiameter_;                // searchCellDiameter() at the last build
+    double cellDiameter_;                // searchCellDiameter() at the last fitSearchCells()
     double skin_;
     bool adaptiveSkin_;
     double skinMin_, skinMax_;           // bounds of the adaptive skin, m
