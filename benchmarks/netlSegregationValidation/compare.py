@@ -39,13 +39,20 @@ prints each seed's rise times (surface at 99 %; >= a censored one, at its
 end time): the record a results page keeps.
 """
 
-import glob
 import os
 import re
 import sys
 
 import numpy as np
 from scipy import stats
+
+try:
+    from dpmfoam2d.tables import read_dat
+except ModuleNotFoundError as e:
+    if not (e.name or "").startswith("dpmfoam2d"):
+        raise
+    sys.exit("compare.py: no Python package dpmfoam2d on PYTHONPATH: source the project's "
+             "etc/bashrc first")
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REFERENCE = os.path.join(HERE, "..", "..", "..", "shared", "reference",
@@ -67,40 +74,109 @@ def interval(x):
     return x.mean(), stats.t.ppf(0.975, n - 1) * x.std(ddof=1) / np.sqrt(n)
 
 
+COLUMNS = ["rank"] + ["riseTime_q%g" % q for q in FRACTIONS]
+RISE_TIME = "dpmRiseTime <seed> -class intruder -fraction %s, as Allrun does" \
+    % " ".join("%g" % q for q in FRACTIONS)
+SEED = re.compile(r"^(U.+)_seed(\d+)$")
+
+
+def refuse(text):
+    sys.exit("compare.py: " + text)
+
+
 def experiment(reference, condition):
+    """The experiment's rise times of a condition, [repeat, k]: its file's
+    rows of equal length, each a time > 0 s."""
     path = os.path.join(reference, condition + ".txt")
-    return np.loadtxt(path, ndmin=2)
+    rows = []
+    with open(path, errors="replace") as f:
+        for n, line in enumerate(f, 1):
+            words = line.split()
+            if not words:
+                continue
+            try:
+                row = [float(w) for w in words]
+            except ValueError:
+                refuse("%s line %d: '%s' is not a number" % (path, n, line.strip()))
+            if not all(np.isfinite(v) and v > 0 for v in row):
+                refuse("%s line %d: a rise time not > 0 s ('%s')" % (path, n, line.strip()))
+            if rows and len(row) != len(rows[0]):
+                refuse("%s line %d: %d rise times, line 1 has %d"
+                       % (path, n, len(row), len(rows[0])))
+            rows.append(row)
+    if not rows:
+        refuse("%s: no rows (one per repeat: its intruders' rise times)" % path)
+    return np.array(rows)
 
 
 def end_time(case):
-    """The run's end time: its controlDict's endTime (s)."""
-    with open(os.path.join(case, "system", "controlDict")) as f:
-        return float(re.search(r"^endTime\s+([^;\s]+)", f.read(), re.M).group(1))
+    """The run's end time: its controlDict's endTime (s); a refusal naming
+    the seed when it cannot be read, as its censored rise times need it."""
+    path = os.path.join(case, "system", "controlDict")
+    why = "no file %s" % path
+    if os.path.isfile(path):
+        with open(path, errors="replace") as f:
+            found = re.findall(r"^endTime\s+([^;]*);", f.read(), re.M)
+        why = "no endTime in %s" % path
+        if found:       # the last, as OpenFOAM reads it
+            try:
+                t = float(found[-1])
+                if np.isfinite(t) and t > 0:
+                    return t
+            except ValueError:
+                pass
+            why = "its endTime '%s' (%s) is not a time in s" % (found[-1].strip(), path)
+    refuse("seed %s: an intruder not risen by the end (nan in riseOrder.dat), and the end "
+           "time it stands for cannot be read: %s; give the seed a plain 'endTime <s>;' or "
+           "leave it out of the run folder" % (case, why))
 
 
-def seed_times(case):
+def seed_times(case, intruders):
     """A finished seed's [k, fraction] rise times, the censored at the end
-    time, and which are censored; None while it runs."""
+    time, and which are censored; None while it runs. Its riseOrder.dat is
+    dpmRiseTime's with FRACTIONS' columns and a row for each of the
+    experiment's intruders (checked: refused naming the file otherwise)."""
     table = os.path.join(case, "postProcessing", "riseTime", "0", "riseOrder.dat")
     if not os.path.isfile(table):
         return None
-    t = np.loadtxt(table, ndmin=2)
-    t = t[:, 1:] if t.shape[1] == len(FRACTIONS) + 1 else t
-    return np.where(np.isnan(t), end_time(case), t), np.isnan(t)
+    try:
+        columns = read_dat(table)
+    except ValueError as e:
+        refuse("%s; write it with %s" % (e, RISE_TIME))
+    if list(columns) != COLUMNS:
+        refuse("%s: columns %s; %s expected: write it with %s"
+               % (table, " ".join(columns), " ".join(COLUMNS), RISE_TIME))
+    rank = columns["rank"]
+    if len(rank) != intruders:
+        refuse("%s: %d rows, one per intruder: the experiment's condition has %d intruders"
+               % (table, len(rank), intruders))
+    if not np.array_equal(rank, np.arange(1, intruders + 1)):
+        refuse("%s: ranks %s, not 1 to %d" % (table, " ".join("%g" % r for r in rank), intruders))
+    t = np.column_stack([columns[c] for c in COLUMNS[1:]])
+    bad = ~np.isnan(t) & ~(np.isfinite(t) & (t >= 0))
+    if bad.any():
+        k, j = np.argwhere(bad)[0]
+        refuse("%s: rank %d, %s: %g is not a rise time (>= 0 s, or nan where not risen)"
+               % (table, k + 1, COLUMNS[1 + j], t[k, j]))
+    censored = np.isnan(t)
+    return np.where(censored, end_time(case) if censored.any() else np.nan, t), censored
 
 
 def seeds(run, condition):
     """The condition's seed directories, in the order of their numbers."""
-    return sorted(glob.glob(os.path.join(run, condition + "_seed*")),
-                  key=lambda p: int(re.search(r"_seed(\d+)$", p).group(1)))
+    found = [(int(m.group(2)), os.path.join(run, name)) for name, m in
+             ((name, SEED.match(name)) for name in os.listdir(run))
+             if m and m.group(1) == condition and os.path.isdir(os.path.join(run, name))]
+    return [path for _, path in sorted(found)]
 
 
-def simulated(run, condition):
+def simulated(run, condition, intruders):
     """([seed, k, fraction] rise times of the finished seeds, with the
     censored at their end time; [seed, k, fraction] censored or not)."""
-    found = [t for t in map(seed_times, seeds(run, condition)) if t is not None]
-    return (np.array([t for t, _ in found]),
-            np.array([c for _, c in found], dtype=bool))
+    found = [t for t in (seed_times(case, intruders) for case in seeds(run, condition))
+             if t is not None]
+    return (np.array([t for t, _ in found]).reshape(-1, intruders, len(FRACTIONS)),
+            np.array([c for _, c in found], dtype=bool).reshape(-1, intruders, len(FRACTIONS)))
 
 
 def welch_above_zero(a, b):
@@ -116,14 +192,14 @@ def welch_above_zero(a, b):
     return bool(d - h > 0), d, h      # a bool, not numpy's: the verdicts test `is False`
 
 
-def print_per_seed(run, conditions):
+def print_per_seed(run, conditions, intruders):
     """Each seed's t_r(k), s, at the criteria's surface."""
     print()
     print("| condition | seed | t_r(1), t_r(2) ..., s |")
     print("| --- | --- | --- |")
     for c in conditions:
         for case in seeds(run, c):
-            found = seed_times(case)
+            found = seed_times(case, intruders[c])
             if found is not None:
                 t, cens = found
                 print("| %s | %s | %s |" % (c, case.rsplit("_seed", 1)[1], ", ".join(
@@ -135,6 +211,7 @@ def draw(drawn, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from dpmfoam2d.files import save_figure
     fig, axes = plt.subplots(1, len(drawn), figsize=(3.2 * len(drawn), 3.2), squeeze=False)
     for ax, (c, sim, cens, exp) in zip(axes[0], drawn):
         for k in range(exp.shape[1]):
@@ -156,18 +233,67 @@ def draw(drawn, path):
     axes[0][0].set_ylabel("rise time, s")
     axes[0][0].legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    save_figure(fig, path, dpi=110)     # renamed onto path: a link there is replaced
     print("wrote %s" % path)
 
 
-def main(argv):
+def arguments(argv):
+    """run, reference, figure, perSeed from the command line, checked."""
     if not argv or argv[0].startswith("-"):
         sys.exit(__doc__)
-    run = argv[0]
-    reference = argv[argv.index("-reference") + 1] if "-reference" in argv else REFERENCE
-    figure = argv[argv.index("-figure") + 1] if "-figure" in argv else None
-    conditions = sorted({re.sub(r"_seed\d+$", "", os.path.basename(c))
-                         for c in glob.glob(os.path.join(run, "U*_seed*"))})
+    run, reference, figure, per_seed = argv[0], REFERENCE, None, False
+    i = 1
+    while i < len(argv):
+        if argv[i] in ("-reference", "-figure"):
+            if i + 1 == len(argv):
+                refuse("%s needs a value (%s)" % (argv[i], "the experiment's measurements folder"
+                                                  if argv[i] == "-reference" else "a .png"))
+            if argv[i] == "-reference":
+                reference = argv[i + 1]
+            else:
+                figure = argv[i + 1]
+            i += 2
+        elif argv[i] == "-perSeed":
+            per_seed, i = True, i + 1
+        else:
+            refuse("unknown argument '%s' (compare.py <run dir> [-reference <dir>] "
+                   "[-figure <png>] [-perSeed])" % argv[i])
+    if not os.path.isdir(run):
+        refuse("no run folder %s" % run)
+    if not os.path.isdir(reference):
+        refuse("no reference folder %s (the experiment's measurements/: -reference <dir>, or "
+               "the shared reference beside the repository, README.md)" % reference)
+    if figure is not None:
+        folder = os.path.dirname(figure) or "."
+        if not os.path.isdir(folder):
+            refuse("-figure %s: no folder %s" % (figure, folder))
+        if os.path.isdir(figure) and not os.path.islink(figure):
+            refuse("-figure %s is a folder; give a file name (.png)" % figure)
+        import matplotlib
+        matplotlib.use("Agg")
+        from matplotlib.figure import Figure
+        formats = Figure().canvas.get_supported_filetypes()
+        if os.path.splitext(figure)[1].lstrip(".").lower() not in formats:
+            refuse("-figure %s: a file name ending in .%s" % (figure, ", .".join(sorted(formats))))
+    return run, reference, figure, per_seed
+
+
+def main(argv):
+    run, reference, figure, per_seed = arguments(argv)
+    conditions = sorted({SEED.match(name).group(1) for name in os.listdir(run)
+                         if SEED.match(name) and os.path.isdir(os.path.join(run, name))})
+    if not conditions:
+        refuse("no seeds <condition>_seed<k> in %s" % run)
+    known = sorted(f[:-len(".txt")] for f in os.listdir(reference) if f.endswith(".txt"))
+    for c in conditions:
+        if c not in known:
+            refuse("%s: condition %s is not one of the experiment's (no %s.txt in %s; its "
+                   "conditions: %s)" % (seeds(run, c)[0], c, c, reference,
+                                        ", ".join(known) or "none"))
+    # Everything read, and checked, before the table starts
+    exps = {c: experiment(reference, c) for c in conditions}
+    intruders = {c: exps[c].shape[1] for c in conditions}
+    sims = {c: simulated(run, c, intruders[c]) for c in conditions}
     print("| condition | k | seeds | simulated t_r, s | experiment t_r, s | overlap |"
           " surface 95 % / 99.9 % | not risen |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- |")
@@ -175,7 +301,7 @@ def main(argv):
     passed = []
     drawn = []
     for c in conditions:
-        (sim, cens), exp = simulated(run, c), experiment(reference, c)
+        (sim, cens), exp = sims[c], exps[c]
         if not len(sim):
             continue
         drawn.append((c, sim[:, :, SURFACE], cens[:, :, SURFACE], exp))
@@ -208,14 +334,19 @@ def main(argv):
                       % (name, which, a, b, d, h, verdict))
                 if which == "simulated":
                     passed.append(ok)
-    if "-perSeed" in argv:
-        print_per_seed(run, conditions)
+    if per_seed:
+        print_per_seed(run, conditions, intruders)
     if figure and drawn:
         draw(drawn, figure)
+    elif figure:
+        print("no figure %s: no seed has finished (riseOrder.dat)" % figure)
     decided = [p for p in passed if p is not None]
     print("\ncriteria met: %d of %d decided (%d undecided)"
           % (sum(decided), len(decided), len(passed) - len(decided)))
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    try:
+        main(sys.argv[1:])
+    except OSError as e:        # unreadable: its path in the message
+        refuse(str(e))

@@ -18,32 +18,66 @@ import sys
 import numpy as np
 
 from dpmfoam2d import particles as pio
+from dpmfoam2d.files import save_figure
+
+
+def refuse(text):
+    sys.exit("heights.py: " + text)
+
+
+def warn(text):
+    print("heights.py: warning: " + text, file=sys.stderr)
+
+
+def class_index(case, cls):
+    """The index of class cls (its name in particleProperties, or its
+    index) in case's particle files."""
+    names = pio.class_names(case)
+    if cls in names:
+        return names.index(cls)
+    if cls.isdigit() and (not names or int(cls) < len(names)):
+        return int(cls)
+    refuse("-class %s: not a class of %s (classes: %s)"
+           % (cls, os.path.join(case, "constant", "particleProperties"),
+              " ".join(names) or "none read: . etc/bashrc for foamDictionary, or give the index"))
 
 
 def series(case, cls, every):
     """Times, the class's heights [time, particle], the surface and the
-    glass's mean height at each time, m."""
-    names = pio.class_names(case)
-    if cls in names:
-        k = names.index(cls)
-    elif cls.isdigit():
-        k = int(cls)
-    else:
-        sys.exit("heights.py: -class %s: not a class of %s (classes: %s)"
-                 % (cls, os.path.join(case, "constant", "particleProperties"),
-                    " ".join(names) or "none read: . etc/bashrc for foamDictionary, or give the index"))
+    glass's mean height at each time, m. A particle file that cannot be
+    read (cut short) is left out, with a warning naming it."""
+    try:
+        pio.check_case(case)
+    except FileNotFoundError as e:
+        refuse(str(e))
+    k = class_index(case, cls)
     rows = []
+    first = None
     next_time = -np.inf
     for t, path in pio.list_times(case):
         if t < next_time - 1e-9:
             continue
+        try:
+            d = pio.read_particles(path)
+        except ValueError as e:
+            warn("%s; left out" % e)
+            continue
         next_time = t + every
-        d = pio.read_particles(path)
         y, c = d["position"][:, 1], d["class"]
-        order = np.argsort(d["id"][c == k])       # each intruder by its id
-        rows.append((t, y[c == k][order], np.quantile(y[c != k], 0.99), y[c != k].mean()))
+        mine = c == k
+        if not mine.any():
+            refuse("%s: no particle of class %s (-class: the class that rises)" % (path, cls))
+        if mine.all():
+            refuse("%s: every particle is of class %s: no bed around it (-class: the class "
+                   "that rises)" % (path, cls))
+        first = first or (path, mine.sum())
+        if mine.sum() != first[1]:
+            refuse("%s: %d particles of class %s, %s has %d"
+                   % (path, mine.sum(), cls, first[0], first[1]))
+        order = np.argsort(d["id"][mine])       # each intruder by its id
+        rows.append((t, y[mine][order], np.quantile(y[~mine], 0.99), y[~mine].mean()))
     if not rows:
-        sys.exit("heights.py: no particle files in %s" % case)
+        refuse("no readable particle files in %s" % pio.particles_dir(case))
     return (np.array([r[0] for r in rows]), np.array([r[1] for r in rows]),
             np.array([r[2] for r in rows]), np.array([r[3] for r in rows]))
 
@@ -55,6 +89,9 @@ def main(argv=None):
     ap.add_argument("-every", type=float, default=0.25, help="s between the files read")
     ap.add_argument("-class", dest="cls", default="intruder")
     a = ap.parse_args(argv)
+    if not (np.isfinite(a.every) and a.every >= 0):
+        refuse("-every %g: a time in s >= 0 expected (0: every particle file)" % a.every)
+    check_output(a.out)
 
     import matplotlib
     matplotlib.use("Agg")
@@ -73,8 +110,21 @@ def main(argv=None):
     axes[0][0].set_ylabel("height, mm")
     axes[0][0].legend(fontsize=7, loc="upper left")
     fig.tight_layout()
-    fig.savefig(a.out, dpi=110)
+    save_figure(fig, a.out, dpi=110)    # renamed onto -o: a link there is replaced
     print("wrote %s" % a.out)
+
+
+def check_output(out):
+    """-o: a file name of a format matplotlib writes, in a folder that exists."""
+    folder = os.path.dirname(out) or "."
+    if not os.path.isdir(folder):
+        refuse("-o %s: no folder %s" % (out, folder))
+    if os.path.isdir(out) and not os.path.islink(out):
+        refuse("-o %s is a folder; give a file name (.png)" % out)
+    from matplotlib.figure import Figure
+    formats = Figure().canvas.get_supported_filetypes()
+    if os.path.splitext(out)[1].lstrip(".").lower() not in formats:
+        refuse("-o %s: a file name ending in .%s" % (out, ", .".join(sorted(formats))))
 
 
 if __name__ == "__main__":

@@ -11,12 +11,18 @@ in colour, with the bed's surface (99 % of the glass centres below it).
 """
 
 import argparse
+import os
 import sys
 
 import numpy as np
 
 from dpmfoam2d import particles as pio
 from dpmfoam2d import rise_time
+from dpmfoam2d.files import save_figure
+
+
+def refuse(text):
+    sys.exit("snapshots.py: " + text)
 
 
 def main(argv=None):
@@ -28,6 +34,17 @@ def main(argv=None):
     ap.add_argument("-top", type=float, default=0.16, help="height shown, m")
     a = ap.parse_args(argv)
 
+    for t in a.times:
+        if not np.isfinite(t):
+            refuse("-times %g: a time must be a finite number" % t)
+    if not (np.isfinite(a.top) and a.top > 0):
+        refuse("-top %g: a height in m > 0 expected" % a.top)
+    check_output(a.out)
+    try:
+        pio.check_case(a.case)
+    except FileNotFoundError as e:
+        refuse(str(e))
+
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -35,16 +52,31 @@ def main(argv=None):
 
     files = pio.list_times(a.case)
     if not files:
-        sys.exit("snapshots.py: no particle files in %s" % a.case)
+        refuse("no particle files in %s" % pio.particles_dir(a.case))
     names = pio.class_names(a.case)
-    cls = names.index(a.cls) if a.cls in names else int(a.cls)
+    if a.cls in names:
+        cls = names.index(a.cls)
+    elif a.cls.isdigit() and (not names or int(a.cls) < len(names)):
+        cls = int(a.cls)
+    else:
+        refuse("-class %s: not a class of %s (classes: %s)"
+               % (a.cls, os.path.join(a.case, "constant", "particleProperties"),
+                  " ".join(names) or "none read: . etc/bashrc for foamDictionary, or give the "
+                  "index"))
     fig, axes = plt.subplots(1, len(a.times), figsize=(1.15 * len(a.times), 3.4),
                              sharey=True, squeeze=False)
     width = None
     for ax, t in zip(axes[0], a.times):
         tf, path = min(files, key=lambda f: abs(f[0] - t))
-        p = pio.read_particles(path)
+        try:
+            p = pio.read_particles(path)
+        except ValueError as e:     # one drawn alone: refused, not replaced by another time
+            refuse(str(e))
         x, y, d, c = p["position"][:, 0], p["position"][:, 1], p["diameter"], p["class"]
+        if not (c == cls).any() or (c == cls).all():
+            refuse("%s: %s particle of class %s: nothing %s (-class: the class that rises)"
+                   % (path, "no" if not (c == cls).any() else "every",
+                      a.cls, "to colour" if not (c == cls).any() else "around it"))
         width = width or float(np.max(x + d / 2))
         for mine, face, alpha in ((c != cls, "0.45", 0.12), (c == cls, "C3", 0.95)):
             ax.add_collection(EllipseCollection(d[mine], d[mine], 0, units="xy",
@@ -61,8 +93,21 @@ def main(argv=None):
     axes[0][0].set_ylabel("height, m")
     axes[0][0].tick_params(labelsize=7)
     fig.tight_layout(w_pad=0.3)
-    fig.savefig(a.out, dpi=100)
+    save_figure(fig, a.out, dpi=100)    # renamed onto -o: a link there is replaced
     print("wrote %s" % a.out)
+
+
+def check_output(out):
+    """-o: a file name of a format matplotlib writes, in a folder that exists."""
+    folder = os.path.dirname(out) or "."
+    if not os.path.isdir(folder):
+        refuse("-o %s: no folder %s" % (out, folder))
+    if os.path.isdir(out) and not os.path.islink(out):
+        refuse("-o %s is a folder; give a file name (.png)" % out)
+    from matplotlib.figure import Figure
+    formats = Figure().canvas.get_supported_filetypes()
+    if os.path.splitext(out)[1].lstrip(".").lower() not in formats:
+        refuse("-o %s: a file name ending in .%s" % (out, ", .".join(sorted(formats))))
 
 
 if __name__ == "__main__":

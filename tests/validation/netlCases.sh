@@ -6,8 +6,10 @@
 # (its bed mass over one bead's, 2522 kg/m3 and 3.101 mm), intruders, their
 # diameter (large 9.43 mm, small 3.155 mm) and seed, the held-out five too;
 # a variant's entries and its shift ('add': U0plus0.10 gives 1.93 and
-# 2.234 m/s); variants joined by '+'; sweepUmf's case records the inlet's
-# pressure every 1 ms in place of the early end. Cases only: no solver runs.
+# 2.234 m/s); variants joined by '+'; a variant's file outside the case
+# refused by makeCase itself, naming the line, and no half-made case left;
+# sweepUmf's case records the inlet's pressure every 1 ms in place of the
+# early end. Cases only: no solver runs.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 here=$testsDir/../benchmarks/netlSegregationValidation
 cd "$workDir" || fail "work directory"
@@ -56,9 +58,37 @@ variant=Beetstra+packedFrictionless
 makeCase U183_M177_1L 1 joined && [ "$(value joined dragModel constant/particleProperties)" = Beetstra ] \
     && [ "$(value joined initialBed.settleFriction constant/particleProperties)" = 0 ] \
     || fail "Beetstra+packedFrictionless: not both applied"
-missing=$(variantMissing Beetstra+noSuchBracket) && [ "$missing" = "no variant file variants/noSuchBracket" ] \
-    && ! variantMissing Beetstra+packedFrictionless >/dev/null || fail "a missing part of a joined variant not named"
+missing=$(checkVariant netlCases Beetstra+noSuchBracket 2>&1) \
+    && fail "a missing part of a joined variant not refused"
+[[ $missing == "netlCases: no variant file $here/variants/noSuchBracket (the variants: "* ]] \
+    && checkVariant netlCases Beetstra+packedFrictionless || fail "a missing part of a joined variant not named: $missing"
 pass "joined variants: Beetstra's drag and the frictionless settling in one case; a missing part named"
+
+# makeCase itself keeps a variant inside the case it makes (as Allrun's and
+# sweepUmf's checks before it), and leaves no half-made case when a line
+# cannot be applied: variants of a copy of the benchmark's folder, the other
+# case's controlDict unchanged
+mkdir -p copy/benchmarks/netl/variants other/system \
+    && ln -s "$testsDir/../tutorials" copy/tutorials && ln -s "$testsDir/../python" copy/python \
+    && printf 'endTime 5;\n' > other/system/controlDict || fail "a copy of the benchmark"
+here=$workDir/copy/benchmarks/netl
+printf 'system/controlDict writeInterval 2\n%s/other/system/controlDict endTime 77\n' "$workDir" \
+    > "$here/variants/absolute"
+printf 'system/../../other/system/controlDict endTime 77\n' > "$here/variants/relative"
+printf 'constant/gasProperties U0 (1 2\n' > "$here/variants/unbalanced"
+for variant in absolute relative unbalanced
+do
+    makeCase U214_M177_4L 1 "$variant" 2> "log.$variant" && fail "$variant: the case was made"
+    [ -e "$variant" ] || ls -a | grep -q "^$variant\.making" && fail "$variant: a half-made case was left"
+    [ "$(cat other/system/controlDict)" = "endTime 5;" ] || fail "$variant: the other case's controlDict changed"
+    cat "log.$variant"
+done
+grep -q "^makeCase: $here/variants/absolute line 2: $workDir/other/system/controlDict is an absolute path" log.absolute \
+    && grep -q "^makeCase: $here/variants/relative line 1: system/../../other/system/controlDict lies outside the case" log.relative \
+    && grep -q "^makeCase: $here/variants/unbalanced line 1: foamDictionary cannot set constant/gasProperties U0 to '(1 2'" log.unbalanced \
+    || fail "the refusals do not name the variant file, its line and the rule"
+here=$testsDir/../benchmarks/netlSegregationValidation
+pass "makeCase: a variant's file outside the case refused, naming its line; no half-made case"
 
 variant=""
 makeSweepCase U183_M227_1L 1 sweep 0.5 || fail "sweepUmf's case"

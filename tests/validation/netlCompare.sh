@@ -192,9 +192,14 @@ then
     do
         cp -r run/${c}_seed1 published/ || fail "copy"
     done
-    for c in U183_M177_4L U183_M227_4L U199_M177_2L U214_M177_2L U214_M177_2S
+    # a seed of each condition's intruder count (compare.py refuses others)
+    for c in U183_M177_4L U183_M227_4L
     do
         cp -r heldOut/U214_M177_4L_seed1 published/${c}_seed1 || fail "copy"
+    done
+    for c in U199_M177_2L U214_M177_2L U214_M177_2S
+    do
+        cp -r heldOut/U214_M177_2L_seed1 published/${c}_seed1 || fail "copy"
     done
     py "$compare" published -reference "$reference" > log.published 2>&1 \
         || { cat log.published; fail "compare.py with the experiment's files"; }

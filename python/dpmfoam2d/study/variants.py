@@ -47,17 +47,10 @@ class Variant:
     def inside(self, directory, n, f, what):
         """directory/f resolved (links followed), refused outside directory:
         a variant edits only the files of the case it makes."""
-        if os.path.isabs(f):
-            sys.exit("dpmStudy: %s line %d: %s is an absolute path; a variant names the "
-                     "files of a case relative to it (system/..., constant/...)"
-                     % (self.path, n, f))
-        root = os.path.realpath(directory)
-        target = os.path.realpath(os.path.join(root, f))
-        if not target.startswith(root + os.sep):
-            sys.exit("dpmStudy: %s line %d: %s lies outside %s (it resolves to %s); a "
-                     "variant edits only the files of the case it makes"
-                     % (self.path, n, f, what, target))
-        return target
+        try:
+            return case_file(directory, f, what)
+        except ValueError as e:
+            sys.exit("dpmStudy: %s line %d: %s" % (self.path, n, e))
 
     @staticmethod
     def recorded_name(text):
@@ -161,3 +154,77 @@ def first_line_comment(path):
             if line.startswith("#") and not line.startswith("# variant "):
                 return line.lstrip("#").strip()
     return ""
+
+
+# The rules of a variant, for dpmStudy (Variant.inside) and for the scripts
+# that apply variants line by line with foamDictionary
+# (benchmarks/netlSegregationValidation): a variant is a file of a variants/
+# folder, named without a path, and each line's file resolves inside the case
+# it edits.
+
+def case_file(case, f, what="the case"):
+    """case/f resolved (links followed), or ValueError saying the rule f
+    breaks: a variant names the files of a case relative to it, and they
+    resolve inside it (what: the case's name in the message)."""
+    if os.path.isabs(f):
+        raise ValueError("%s is an absolute path; a variant names the files of a case relative "
+                         "to it (system/..., constant/...)" % f)
+    root = os.path.realpath(case)
+    target = os.path.realpath(os.path.join(root, f))
+    if not target.startswith(root + os.sep):
+        raise ValueError("%s lies outside %s (it resolves to %s); a variant edits only "
+                         "the files of the case it makes" % (f, what, target))
+    return target
+
+
+def variant_file_edits(variants_dir, name, case):
+    """The edits of the variant variants_dir/name in case: [(line number,
+    case's file resolved, entry, value)], each file one the case has. A name
+    is that of a file of variants_dir (VARIANT_NAME: no '/', no leading '.'),
+    and the lines are '<file> <entry> <value>' ('#' starts a comment line).
+    ValueError naming the variant file, the line and the rule it breaks."""
+    if not VARIANT_NAME.match(name):
+        raise ValueError("variant name '%s': the name of a file of %s (letters, digits, '.' and "
+                         "'-', starting with a letter: no '/' or '..')" % (name, variants_dir))
+    path = os.path.join(variants_dir, name)
+    if not os.path.isfile(path):
+        known = sorted(n for n in os.listdir(variants_dir) if VARIANT_NAME.match(n)) \
+            if os.path.isdir(variants_dir) else []
+        raise ValueError("no variant file %s (the variants: %s)"
+                         % (path, ", ".join(known) if known else "none"))
+    edits = []
+    with open(path) as f:
+        for n, line in enumerate(f, 1):
+            words = line.split(None, 2)
+            if not words or words[0].startswith("#"):
+                continue
+            if len(words) < 3:
+                raise ValueError("%s line %d: '<file> <entry> <value>' expected, got '%s'"
+                                 % (path, n, line.strip()))
+            try:
+                target = case_file(case, words[0])
+            except ValueError as e:
+                raise ValueError("%s line %d: %s" % (path, n, e))
+            if not os.path.isfile(target):
+                raise ValueError("%s line %d: the case has no file %s" % (path, n, words[0]))
+            edits.append((n, target, words[1], words[2].strip()))
+    if not edits:
+        raise ValueError("variant %s has no edits" % path)
+    return edits
+
+
+def print_variant_file_edits(argv=None):
+    """The command line of variant_file_edits for a shell script:
+    <tool> <variants dir> <name>[+<name> ...] <case>: every edit, the parts
+    in turn, one a line: variant file, line number, file, entry, value
+    (tab-separated); nothing and exit status 1, with the message after
+    '<tool>: ' on stderr, if any line breaks a rule."""
+    tool, variants_dir, names, case = sys.argv[1:] if argv is None else argv
+    try:
+        out = ["%s\t%d\t%s\t%s\t%s" % ((os.path.join(variants_dir, name),) + edit)
+               for name in names.split("+")
+               for edit in variant_file_edits(variants_dir, name, case)]
+    except ValueError as e:
+        sys.exit("%s: %s" % (tool, e))
+    for line in out:
+        print(line)
