@@ -75,11 +75,12 @@ def internal_field(path, n_cells=None):
     return a.reshape(n, ncomp) if ncomp > 1 else a
 
 
-def time_dirs(case):
-    """(time, name) of the case's numeric time directories, in time order
-    (none if the case does not exist yet)."""
+def time_dirs(case: str) -> "list[tuple[float, str]]":
+    """(time, name) of the case's numeric time directories, in time order.
+    A case directory that does not exist is refused (FileNotFoundError
+    naming it): a mistyped path is not a case without times."""
     if not os.path.isdir(case):
-        return []
+        raise FileNotFoundError("no case directory %s" % case)
     return sorted((float(name), name) for name in os.listdir(case)
                   if TIME_NAME.match(name) and os.path.isdir(os.path.join(case, name)))
 

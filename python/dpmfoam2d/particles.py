@@ -24,6 +24,7 @@ make files of the same layout from arrays (synthetic beds of known
 geometry for the picture tests).
 """
 
+import math
 import os
 import subprocess
 
@@ -82,9 +83,13 @@ def check_case(case):
                                 "particles/ or postProcessing/)" % case)
 
 
-def class_names(case):
+def class_names(case: str) -> "list[str]":
     """The class names of constant/particleProperties in their order (the
-    particle files' class indices), or [] when foamDictionary cannot say."""
+    particle files' class indices), or [] when foamDictionary cannot say (no
+    such file, or no OpenFOAM). A case directory that does not exist is
+    refused (FileNotFoundError naming it)."""
+    if not os.path.isdir(case):
+        raise FileNotFoundError("no case directory %s" % case)
     path = os.path.join(case, "constant", "particleProperties")
     try:
         out = subprocess.run(["foamDictionary", "-entry", "classes", "-keywords", path],
@@ -170,15 +175,19 @@ def readable(path):
     return None
 
 
-def read(case, t=None):
+def read(case: str, t: "float | None" = None) -> dict:
     """The particles of a case at the output time nearest to t (the latest
     if t is None): read_particles of that file."""
     return read_particles(nearest_time(case, t)[1])
 
 
-def list_times(case):
-    """[(time, path)] of the particle files of a case, in time order. The
-    time is read from the file name (as OpenFOAM names time directories)."""
+def list_times(case: str) -> "list[tuple[float, str]]":
+    """[(time, path)] of the particle files of a case, in time order ([] for
+    a case without any). The time is read from the file name (as OpenFOAM
+    names time directories). A case directory that does not exist is
+    refused (FileNotFoundError naming it)."""
+    if not os.path.isdir(case):
+        raise FileNotFoundError("no case directory %s" % case)
     d = particles_dir(case)
     out = []
     if os.path.isdir(d):
@@ -189,8 +198,13 @@ def list_times(case):
     return sorted(out)
 
 
-def nearest_time(case, t=None):
-    """(time, path) of the particle file nearest to t; the latest if t is None."""
+def nearest_time(case: str, t: "float | None" = None) -> "tuple[float, str]":
+    """(time, path) of the particle file nearest to t; the latest if t is
+    None. A time that is no finite number is refused (ValueError): no file
+    is nearest to nan."""
+    if t is not None and not math.isfinite(float(t)):
+        raise ValueError("time %s is not a finite number (a time in s, or None for the "
+                         "latest particle file)" % t)
     times = list_times(case)
     if not times:
         raise FileNotFoundError("no particle files <time>.h5 in %s" % particles_dir(case))

@@ -19,13 +19,14 @@ import numpy as np
 from .fields import TIME_NAME
 from .particles import check_case
 
-def read_dat(path):
+def read_dat(path: str) -> "dict[str, np.ndarray]":
     """Columns of a whitespace table (laceyIndex.dat, segregation.dat):
     dict name -> numpy array. The column names are the last '#' line before
     the first row of numbers (OpenFOAM's writeFile may put other comment
     lines above it). A row that is not one number per column is refused,
-    naming the file and line; only a last line without its end of line (a
-    run writing it, or killed while it did) is left out, with a note."""
+    naming the file and line; a last line without its end of line (a run
+    writing it, or killed while it did) is left out, with a note on stderr,
+    even when it has every column (its last number may be cut short)."""
     names = None
     rows = []
     with open(path, errors="replace") as f:
@@ -42,6 +43,12 @@ def read_dat(path):
         if names is None:
             raise ValueError("%s line %d: a row before the '#' header line naming the "
                              "columns" % (path, n))
+        if n > complete:
+            # Being written, or cut by a kill: even with every column its
+            # last number may be cut short, so it is never trusted
+            print("note: %s line %d: cut short (no end of line): left out" % (path, n),
+                  file=sys.stderr)
+            continue
         words = s.split()
         try:
             values = [float(v) for v in words]
@@ -50,10 +57,6 @@ def read_dat(path):
             values = None
         if values is not None and len(values) == len(names):
             rows.append(values)
-            continue
-        if n > complete:
-            print("note: %s line %d: cut short (no end of line): left out" % (path, n),
-                  file=sys.stderr)
             continue
         if values is None:
             raise ValueError("%s line %d: '%s' is not a number (columns: %s)"
@@ -198,11 +201,15 @@ def segregation(case, name="laceyIndex", postprocess=False):
     return read_postprocessing(case, name, "segregation.dat", postprocess)
 
 
-def study_table(study_dir, name="summary"):
+def study_table(study_dir: str, name: str = "summary") -> "dict[str, np.ndarray] | None":
     """A table of a study's results, <study_dir>/results/<name>.csv
     (summary, windows, ensemble, ensembleWindows, findings, verdicts), as a
     dict column -> numpy array: numbers where every value of the column is
-    one (empty: nan), text otherwise. None if dpmStudy has not written it."""
+    one (empty: nan), text otherwise. None if dpmStudy has not written it;
+    a study directory that does not exist is refused (FileNotFoundError
+    naming it): a mistyped path is no study without results."""
+    if not os.path.isdir(study_dir):
+        raise FileNotFoundError("no study directory %s" % study_dir)
     path = os.path.join(study_dir, "results", name + ".csv")
     if not os.path.isfile(path):
         return None

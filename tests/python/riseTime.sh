@@ -14,7 +14,11 @@
 #     table per particle and the ranks; -start 0.2 counts from 0.2 s.
 #   - A run of the test column: one row per particle of the class named
 #     by its name in particleProperties.
-#   - Bad options are refused naming them.
+#   - Bad options are refused naming them; so are a class that is every
+#     particle (no bed to rise through), a file or folder where the tables
+#     go, a read-only case (run as nobody by root) and a particle file of
+#     another run (other particles or ids than the first file's), each in
+#     one line naming the path, without a traceback.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
 
@@ -72,6 +76,53 @@ refused "^dpmRiseTime: -fraction 1 is outside \(0, 1\)" "$workDir/written" -frac
 refused "^dpmRiseTime: -class intruder: not a class of .*particleProperties" "$workDir/written" -class intruder
 refused "^dpmRiseTime: no case directory .*/missing" "$workDir/missing"
 refused "^dpmRiseTime: .*: no particle of class 5" "$workDir/written" -class 5
+# A class that is every particle: no bed to rise through
+mkdir -p "$workDir/oneClass/system" && touch "$workDir/oneClass/system/controlDict"
+py - "$workDir/oneClass" <<'PY' || fail "writing oneClass"
+import sys
+import numpy as np
+from dpmfoam2d import particles
+for t in (0, 0.1):
+    particles.write_particles(sys.argv[1], t, np.column_stack([np.full(5, 0.01), 1e-3 * np.arange(1, 6)]),
+                              np.full(5, 1e-3), [0] * 5)
+PY
+refused "^dpmRiseTime: .*/oneClass: every one of the 5 particles of .*/0.h5 is of class 0: no bed of other particles" "$workDir/oneClass"
+# Where the tables cannot go: a file or a folder in their way
+copyWritten() { rm -rf "$workDir/$1" && cp -r "$workDir/written" "$workDir/$1" && rm -rf "$workDir/$1/postProcessing"; }
+copyWritten inTheWay && mkdir -p "$workDir/inTheWay/postProcessing" && touch "$workDir/inTheWay/postProcessing/riseTime"
+refused "^dpmRiseTime: cannot write the tables into .*/inTheWay/postProcessing/riseTime/0: .*/inTheWay/postProcessing/riseTime is a file, not a folder" "$workDir/inTheWay" -class 1
+copyWritten folderInTheWay && mkdir -p "$workDir/folderInTheWay/postProcessing/riseTime/0/riseTime.dat"
+refused "^dpmRiseTime: cannot write .*/folderInTheWay/postProcessing/riseTime/0/riseTime.dat: a folder is in the way" "$workDir/folderInTheWay" -class 1
+# A case it may not write into: root's runs it as nobody (root writes anywhere)
+copyWritten readOnly && chmod a-w "$workDir/readOnly"
+if [ "$(id -u)" = 0 ]
+then
+    setpriv --reuid=65534 --regid=65534 --clear-groups dpmRiseTime "$workDir/readOnly" -class 1 \
+        > "$workDir/log.readOnly" 2>&1 && fail "dpmRiseTime ran in a read-only case"
+else
+    dpmRiseTime "$workDir/readOnly" -class 1 > "$workDir/log.readOnly" 2>&1 \
+        && fail "dpmRiseTime ran in a read-only case"
+fi
+grep -q "^dpmRiseTime: cannot write the tables into .*/readOnly/postProcessing/riseTime/0: Permission denied" \
+    "$workDir/log.readOnly" && ! grep -q Traceback "$workDir/log.readOnly" \
+    || { cat "$workDir/log.readOnly"; fail "a read-only case: no one-line message naming it"; }
+echo "ok   refused: $(head -1 "$workDir/log.readOnly")"
+chmod u+w "$workDir/readOnly"
+# A particle file of another run among the others: fewer particles, or the
+# same number with other ids
+for kind in fewer otherIds
+do
+    copyWritten $kind
+    py - "$workDir/$kind" $kind <<'PY' || fail "writing $kind"
+import sys
+import numpy as np
+from dpmfoam2d import particles
+n, ids = (50, np.arange(50)) if sys.argv[2] == "fewer" else (104, np.arange(1000, 1104))
+particles.write_particles(sys.argv[1], 1.05, np.column_stack([np.full(n, 0.01), np.linspace(0.001, 0.1, n)]),
+                          np.full(n, 1e-3), [0] * (n - 4) + [1] * 4, ids=ids)
+PY
+    refused "^dpmRiseTime: .*/$kind/particles/1.05.h5: not the particles of the other files \((50 particles, 4 of class 1; .*/0.h5 has 104, 4 of them|other particle ids than .*/0.h5)\)" "$workDir/$kind" -class 1
+done
 
 makeCase "$workDir/column"
 (cd "$workDir/column" && runSolver) || fail "the test column"

@@ -48,6 +48,69 @@ Usage
 #include "gasProperties.H"
 #include "dpmCloud.H"
 #include "fluidization.H"
+#include "finiteNumber.H"
+
+#include <sstream>
+
+namespace
+{
+
+//- The voidages of option -voidage, '(e1 e2 ...)' (a single number without
+//  parentheses too), each a finite number in (0, 1); a FatalError naming
+//  the option and what is wrong otherwise. Read here rather than by
+//  OpenFOAM's list reader, whose messages name neither the option nor the
+//  value (and 1e400 becomes inf, which traps at the first comparison).
+Foam::scalarList voidageList(const Foam::string& text)
+{
+    using namespace Foam;
+    const std::string allowed =
+        "allowed: one or more voidages, each in (0, 1), in parentheses,"
+        " e.g. -voidage '(0.4 0.45 0.5)'";
+    std::string inner(text);
+    const std::size_t open = inner.find('(');
+    const std::size_t close = inner.rfind(')');
+    if (open != std::string::npos || close != std::string::npos)
+    {
+        const bool onlySpaceOutside =
+            open != std::string::npos && close != std::string::npos
+         && open < close
+         && inner.find_first_not_of(" \t") == open
+         && inner.find_last_not_of(" \t") == close;
+        if (!onlySpaceOutside)
+        {
+            FatalErrorInFunction
+                << "Option -voidage '" << text.c_str() << "': unbalanced or"
+                << " misplaced parentheses; " << allowed.c_str()
+                << exit(FatalError);
+        }
+        inner = inner.substr(open + 1, close - open - 1);
+    }
+    DynamicList<scalar> values;
+    std::istringstream words(inner);
+    for (std::string word; words >> word;)
+    {
+        double v = 0;
+        const bool number = readFiniteNumber(word, v);
+        if (!number || !(v > 0 && v < 1))
+        {
+            FatalErrorInFunction
+                << "Option -voidage: '" << word.c_str() << "' is "
+                << (number ? "outside (0, 1)" : "not a finite number")
+                << "; " << allowed.c_str() << exit(FatalError);
+        }
+        values.append(v);
+    }
+    if (values.empty())
+    {
+        FatalErrorInFunction
+            << "Option -voidage: the list is empty; " << allowed.c_str()
+            << exit(FatalError);
+    }
+    return scalarList(std::move(values));
+}
+
+} // End anonymous namespace
+
 
 int main(int argc, char *argv[])
 {
@@ -70,24 +133,12 @@ int main(int argc, char *argv[])
     #include "readGravitationalAcceleration.H"
     Sout.precision(8);
 
-    scalarList voidages({0.4, 0.45, 0.5});
-    args.readListIfPresent<scalar>("voidage", voidages);
-    if (voidages.empty())
-    {
-        FatalErrorInFunction
-            << "Option -voidage: the list is empty; allowed: one or more"
-            << " voidages, each in (0, 1), e.g. -voidage '(0.4 0.45 0.5)'"
-            << exit(FatalError);
-    }
-    for (const scalar eps : voidages)
-    {
-        if (!(eps > 0 && eps < 1))
-        {
-            FatalErrorInFunction
-                << "Option -voidage: " << eps << " is not a voidage; allowed:"
-                << " each value in (0, 1)" << exit(FatalError);
-        }
-    }
+    const scalarList voidages
+    (
+        args.found("voidage")
+      ? voidageList(args["voidage"])
+      : scalarList({0.4, 0.45, 0.5})
+    );
 
     gasProperties gas(mesh);
     const dpmCloud particles        // no particles: only the settings

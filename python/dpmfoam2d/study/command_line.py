@@ -90,7 +90,8 @@ every pressure (use another <studyDir> for such a variant study).
 -status prints every bed and case with its state (not started, pending,
 running, stopped, failed, done), its job (a local process or a Slurm task)
 and its simulated time (a running case's with the solver's ETA), then the
-simulated seconds left over all cases.
+simulated seconds left over all cases; a summary case (below) shows as
+imported, at the time it records.
 -slurm: on a Slurm cluster, prepares the beds and cases as a local run does,
 then submits the beds as a job array, the cases as a second array that
 waits for them (afterok) and a last job that makes results/ (afterany); one
@@ -110,7 +111,10 @@ constant/archivedCase), which results/ reads like its own and the runner
 counts as finished, never running them again. An import refuses, naming the
 difference, a study of another studyDict and a case whose settings (other
 than its w, pressure and seed) or dictionaries differ from the study's
-cases; a case of the same name with the same settings is kept as it is.
+cases; a case of the same name with the same settings is kept as it is (if
+it has not finished here, the import says that this local case is used).
+A summary case cannot be continued: a run with a longer -endTime says so
+and leaves it at its time, and packs no bed that only summaries would use.
 An archive is unpacked only if it holds nothing but the studyDict and
 summary cases (no links, no other files) within 64 MiB a file, 1024 MiB in
 all and 100000 members; its files get this process's modes (umask), not
@@ -128,11 +132,13 @@ particleScale, e.g. slab5mm's twice Table 3's; shorter settling).
 import argparse
 import errno
 import os
+import re
 import sys
 
 from .. import PROJECT_DIR
 from . import definition as study_definition
-from . import archive as study_archive, results as study_results, slurm as study_slurm
+from . import archive as study_archive, cases as study_cases, results as study_results, \
+    slurm as study_slurm
 from .jobs import latest_complete_time, path_problem, running_in
 from .locks import LockError
 from .runner import Study, say
@@ -219,7 +225,7 @@ def main():
         if getattr(args, name) and not os.path.isdir(args.studyDir):
             ap.error("-%s: no study directory %s" % (name, args.studyDir))
     if args.export or args.importFrom:
-        study_archive.command(args, say)
+        study_archive.command(args, import_say(args.studyDir))
         if args.export and not args.importFrom:
             return
         args.results = True
@@ -269,6 +275,32 @@ def main():
     # results/ sums up every case of the study directory, not only those run now
     study_results.results(study.dir, args.mean, args.rateWindow, not args.noPictures,
                           study_results.definition_of(study.dir, study.template))
+
+
+# study.archive's line for a case of the import that is here already
+KEPT_LINE = re.compile(r"^import: (\S+) is here already, with the same settings: kept$")
+
+
+def import_say(study_dir):
+    """say for -import: a case that the import finds here already and keeps
+    is followed by which one the study uses when the local case has not
+    finished (the finished one of the import is not taken)."""
+    def say_import(line):
+        say(line)
+        m = KEPT_LINE.match(line)
+        if not m:
+            return
+        case = os.path.join(study_dir, m.group(1))
+        if study_archive.is_summary(case):
+            return
+        settings = study_cases.flat_dictionary(os.path.join(case, "constant", "caseSettings"))
+        why = study_archive.unfinished(case, float(settings["endTime"])
+                                       if "endTime" in settings else None)
+        if why:
+            say("import: %s: the local case is used, unfinished (%s); the finished case of "
+                "the import is not taken: run the study to finish the local one, or remove "
+                "%s and import again to use the finished one" % (m.group(1), why, case))
+    return say_import
 
 
 def command():

@@ -203,6 +203,13 @@ class Study:
                          "this study's endTime %g s: it cannot be continued here; remove it "
                          "to run the case anew" % (case, study_archive.summary_time(case),
                                                     self.end_time(case)))
+            t = study_archive.summary_time(case)
+            if self.a.endTime is not None and t < self.a.endTime - 1e-9:
+                say("%-16s an imported summary (t = %g s): it cannot be continued to "
+                    "-endTime %g s and keeps its time; remove it to run the case anew"
+                    % (name, t, self.a.endTime))
+            else:
+                say("%-16s finished (t = %g s): an imported summary" % (name, t))
             return None
         else:
             self.check_variant(case)
@@ -267,6 +274,9 @@ class Study:
         beds, bed_jobs, queued = {}, [], []
         for w in self.ws:
             for seed in self.seeds:
+                if all(study_archive.is_summary(self.case_dir(w, p, seed)) for p in self.ps):
+                    beds[w, seed] = None    # no case of it runs here: nothing to pack
+                    continue
                 job = self.bed_job(w, seed)
                 if isinstance(job, str):        # a Slurm task packs it
                     queued.append(job)
@@ -281,6 +291,8 @@ class Study:
                     job = self.case_job(w, p, seed, beds[w, seed])
                     if job:
                         case_jobs.append(job)
+                    elif study_archive.is_summary(self.case_dir(w, p, seed)):
+                        pass                # case_job said what it is
                     elif self.finished(self.case_dir(w, p, seed)):
                         case = self.case_dir(w, p, seed)
                         say("%-16s finished (t = %g s)" % (os.path.basename(case),

@@ -199,6 +199,7 @@ def hours(seconds):
 def status(study, running_in, latest_complete_time):
     """One line per bed and case: state, job, simulated time."""
     from . import cases as study_cases
+    from .archive import is_summary, summary_time
     states = queue_states()
     beds_dir = os.path.join(study.dir, "beds")
     # (a dot name: a bed being made)
@@ -225,6 +226,17 @@ def status(study, running_in, latest_complete_time):
             t = ""
             finished = os.path.isfile(os.path.join(d, "constant", "packedBed.state"))
             log = os.path.join(d, "log.dpmPackBed")
+        elif is_summary(d):
+            # imported: no time directories, the time its summary records;
+            # never run here, so nothing of it is left to simulate
+            tc, end = summary_time(d), study.end_time(d)
+            finished = study.finished(d)
+            say("%-28s %-11s %-14s %s" % (name, "done" if finished else "incomplete",
+                                          "imported", "%s of %g s (an imported summary%s)" % (
+                                              "%g" % tc if tc is not None else "no time",
+                                              end, "" if finished else
+                                              ": cannot be continued")))
+            continue
         else:
             tc = latest_complete_time(d)
             end = study.end_time(d)

@@ -15,6 +15,7 @@ License
 #include "Pstream.H"
 #include "unitConversion.H"
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
@@ -140,16 +141,54 @@ void Foam::caseChecks::bedGeometry
     forAll(bedGeometryEntries(), k)
     {
         const word& key = bedGeometryEntries()[k];
-        scalar value;
-        if (!plainNumber(bed, key, value)) continue;
-        if (k < 3) value *= scale;
+        const bool isCount = k >= 3;
+        const bool found = bed.found(key, keyType::LITERAL);
+        // A grid one cell deep needs no nz; every other entry is read by
+        // blockMeshDict and must be there
+        if (!found && key != "nz")
+        {
+            FatalIOErrorInFunction(bed)
+                << "Entry '" << key << "' is missing in system/bedGeometry;"
+                << " blockMeshDict makes the mesh from it" << exit(FatalIOError);
+        }
+        scalar value = 1;
+        if (found && !plainNumber(bed, key, value))
+        {
+            FatalIOErrorInFunction(bed)
+                << "Entry '" << key << "' in system/bedGeometry is not a"
+                << " number; allowed: " << (isCount ? "a whole number of"
+                   " cells in [1, 100000]" : "a length > 0 (m)")
+                << exit(FatalIOError);
+        }
+        const bool allowed =
+            isCount
+          ? value >= 1 && value <= 100000 && value == std::floor(value)
+          : value > 0 && value < GREAT;
+        if (!allowed)
+        {
+            FatalIOErrorInFunction(bed)
+                << "Entry '" << key << "' = " << value << " in"
+                << " system/bedGeometry is outside the allowed range "
+                << (isCount ? "[1, 100000], a whole number of cells"
+                   : "(0, inf), a length in m")
+                << exit(FatalIOError);
+        }
+        if (!isCount) value *= scale;
         // The mesh points may be written with 6 digits (OpenFOAM's default
         // writePrecision): agreement to 1e-5 is a match
         if (mag(value - meshValues[k]) > 1e-5*mag(meshValues[k]))
         {
             differences
-                << (differences.str().empty() ? "" : ", ") << key << ' '
-                << value << " there, " << meshValues[k] << " in the mesh";
+                << (differences.str().empty() ? "" : ", ") << key << ' ';
+            if (found)
+            {
+                differences << value;
+            }
+            else
+            {
+                differences << "absent (1)";
+            }
+            differences << " there, " << meshValues[k] << " in the mesh";
         }
     }
     if (!differences.str().empty())

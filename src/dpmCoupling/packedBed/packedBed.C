@@ -178,6 +178,19 @@ void Foam::packedBed::start()
     const dictionary& bed = dict_.subDict("initialBed");
     if (bed.found("positions"))
     {
+        // Listed positions are used as they are: nothing is packed or settled
+        wordList ignored;
+        for (const word key : {"file", "seed", "settleTime", "settleFriction", "packHeight", "place"})
+        {
+            if (bed.found(key, keyType::LITERAL)) ignored.append(key);
+        }
+        if (!ignored.empty())
+        {
+            WarningInFunction
+                << "initialBed in " << dict_.name() << ": " << ignored
+                << " ignored: the particles are placed from 'positions' as"
+                << " listed, nothing is packed or settled" << endl;
+        }
         const fileName file = bed.get<fileName>("positions").expand();
         readPositions(file);
         Info<< "Particles: " << engine_.size() << " placed from " << file
@@ -187,6 +200,7 @@ void Foam::packedBed::start()
 
     const fileName file = bedFile();
     const dem::BedRecipe r = recipe();
+    noteUnsettled(r);
     if (!file.empty() && isFile(file))
     {
         std::string problem;
@@ -240,6 +254,18 @@ void Foam::packedBed::start()
 }
 
 
+void Foam::packedBed::noteUnsettled(const dem::BedRecipe& r) const
+{
+    if (r.settleFriction && !(r.settleTime > 0))
+    {
+        WarningInFunction
+            << "Entry 'settleFriction' in initialBed of " << dict_.name()
+            << " is ignored: settleTime is " << r.settleTime << ", so the"
+            << " bed is not settled" << endl;
+    }
+}
+
+
 void Foam::packedBed::checkRestart(const fileName& restart) const
 {
     const dictionary& bed = dict_.subDict("initialBed");
@@ -275,6 +301,7 @@ bool Foam::packedBed::pack(const fileName& file, const bool overwrite)
     }
     checkOutput(file);
     const dem::BedRecipe r = recipe();
+    noteUnsettled(r);
 
     if (exists(file))
     {

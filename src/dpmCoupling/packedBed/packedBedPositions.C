@@ -13,6 +13,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "packedBed.H"
+#include "finiteNumber.H"
 
 #include <cerrno>
 #include <cmath>
@@ -38,13 +39,6 @@ bool readWhole(const std::string& text, label& value)
     return true;
 }
 
-//- A finite number written as one (no nan or inf, no trailing characters)
-bool readFinite(const std::string& text, scalar& value)
-{
-    char* end = nullptr;
-    value = std::strtod(text.c_str(), &end);
-    return *end == '\0' && std::isfinite(value);
-}
 
 } // End anonymous namespace
 
@@ -111,7 +105,7 @@ void Foam::packedBed::readPositions(const fileName& file)
         scalar xy[3];
         for (label k = 0; k + 1 < label(words.size()); ++k)
         {
-            if (!readFinite(words[k + 1], xy[k]))
+            if (!readFiniteNumber(words[k + 1], xy[k]))
             {
                 bad
                 (

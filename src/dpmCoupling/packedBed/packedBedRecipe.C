@@ -193,6 +193,13 @@ std::vector<dem::PlacedParticle> Foam::packedBed::placed
     const dictionary& bed = dict_.subDict("initialBed");
     const dictionary* place = bed.findDict("place", keyType::LITERAL);
     std::vector<dem::PlacedParticle> out;
+    if (!place && bed.found("place", keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(bed)
+            << "Entry 'place' of initialBed in " << dict_.name() << " is not"
+            << " a dictionary; allowed: place { <class> { positions ((x y z)"
+            << " ...); random <count>; } ... }" << exit(FatalIOError);
+    }
     if (!place)
     {
         return out;

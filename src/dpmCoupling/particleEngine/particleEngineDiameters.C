@@ -16,10 +16,12 @@ License
 
 #include "particleEngine.H"
 #include "positiveEntry.H"
+#include "finiteNumber.H"
 #include "mathematicalConstants.H"
 #include "Time.H"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -30,7 +32,8 @@ namespace
 
 //- The diameters of a samples file: numbers separated by white space,
 //  '#' or '//' to the end of a line a comment; false (and the line in
-//  badLine) at a word that is not a number
+//  badLine) at a word that is not a finite number (nan, inf and 1e400
+//  too: a non-finite value traps at its first comparison)
 bool readSamples
 (
     std::istream& in,
@@ -49,9 +52,8 @@ bool readSamples
         std::istringstream words(line);
         for (std::string word; words >> word;)
         {
-            char* end = nullptr;
-            const double v = std::strtod(word.c_str(), &end);
-            if (end == word.c_str() || *end != '\0')
+            double v = 0;
+            if (!Foam::readFiniteNumber(word, v))
             {
                 badLine = n;
                 badWord = word;
@@ -125,6 +127,14 @@ dem::ParticleClass Foam::particleEngine::readClass
             {
                 file = dict_.time().path()/file;   // the case's directory
             }
+            if (isDir(file))
+            {
+                FatalIOErrorInFunction(d)
+                    << "Entry 'file' of classes/" << name << "/diameter in "
+                    << dict_.name() << ": " << file << " is a folder;"
+                    << " allowed: a readable file of diameters, one or more"
+                    << " a line" << exit(FatalIOError);
+            }
             std::ifstream in(file);
             if (!in)
             {
@@ -142,7 +152,7 @@ dem::ParticleClass Foam::particleEngine::readClass
                 FatalIOErrorInFunction(d)
                     << "Entry 'file' of classes/" << name << "/diameter in "
                     << dict_.name() << ": line " << badLine << " of " << file
-                    << " holds '" << badWord.c_str() << "', not a number;"
+                    << " holds '" << badWord.c_str() << "', not a finite number;"
                     << " allowed: diameters separated by white space, '#'"
                     << " comments" << exit(FatalIOError);
             }
@@ -155,16 +165,29 @@ dem::ParticleClass Foam::particleEngine::readClass
                 << "/diameter in " << dict_.name() << " holds no diameters;"
                 << " allowed: at least one diameter > 0" << exit(FatalIOError);
         }
+        // A diameter as wide as the bed is a unit mix-up (micrometres read
+        // as metres), named here rather than by the DEM step's bound
+        const scalar width = grid_.xMax() - grid_.xMin();
         for (std::size_t q = 0; q < values.size(); ++q)
         {
             values[q] *= scale;
-            if (!(values[q] > 0))
+            if (!std::isfinite(values[q]) || !(values[q] > 0))
             {
                 FatalIOErrorInFunction(d)
                     << "Entry '" << from << "' of classes/" << name
                     << "/diameter in " << dict_.name() << ": diameter "
                     << label(q + 1) << " = " << values[q] << " m (scale "
                     << scale << ") is outside the allowed range (0, inf)"
+                    << exit(FatalIOError);
+            }
+            if (values[q] >= width)
+            {
+                FatalIOErrorInFunction(d)
+                    << "Entry '" << from << "' of classes/" << name
+                    << "/diameter in " << dict_.name() << ": diameter "
+                    << label(q + 1) << " = " << values[q] << " m (scale "
+                    << scale << ") is not below the bed's width " << width
+                    << " m; samples in micrometres need 'scale 1e-6'"
                     << exit(FatalIOError);
             }
         }

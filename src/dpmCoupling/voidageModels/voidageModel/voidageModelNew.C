@@ -27,6 +27,19 @@ Foam::autoPtr<Foam::voidageModel> Foam::voidageModel::New
         " cell thick) or spheres3D (sphere volume in the cells of a gas"
         " resolved in depth)"
     );
+    // Another model's coefficients are not read: say so, since the user
+    // wrote them for a reason (spheres3DCoeffs under discs2D: no spreading)
+    for (const word& other : gridConstructorTablePtr_->sortedToc())
+    {
+        if (other != choice && dict.found(other + "Coeffs", keyType::LITERAL))
+        {
+            WarningInFunction
+                << "Entry '" << other << "Coeffs' in " << dict.name()
+                << " is ignored: voidageModel is " << choice << "; set"
+                << " voidageModel " << other << " to use it, or remove it"
+                << endl;
+        }
+    }
     return (*gridConstructorTablePtr_)[choice](dict, grid, voidageMin);
 }
 
