@@ -2,36 +2,56 @@
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The rise times of NETL's segregating bed (LaMarche et al. 2022) against
-the experiment's: for each condition, the mean over the seeds of the k-th
-intruder's rise time with its 95 % t-interval, beside the experiment's mean
-and interval over its repeats (its files measurements/<condition>.txt, in
-the folder REFERENCE), and the verdicts of the criteria fixed before the
-runs (README.md):
+the experiment's (its files measurements/<condition>.txt, in the folder
+REFERENCE): for each condition and k (the k-th intruder to emerge), the
+mean over the seeds beside the experiment's mean over its repeats (each
+with its 95 % t-interval), and the verdicts of the criteria declared before
+the runs (README.md):
 
-  1. each mean's interval overlaps the experiment's (k = 1 .. intruders);
-  2. a heavier bed rises slower: t_r(1) at 227.47 g > at 177.46 g (1.83 m/s);
-  3. a slower gas rises slower: t_r(1) at 1.83 m/s > at 2.134 m/s (177.46 g);
+  1. equivalence of the means, for each condition and k: the two one-sided
+     tests (TOST) at 5 % on the simulated minus the measured mean, Welch's
+     standard error and degrees of freedom, within the margin +-Delta,
+     Delta twice the experiment's repeat standard deviation of that
+     condition and k: met when the 90 % interval of the difference lies inside
+     (-Delta, +Delta), not met when it lies wholly outside, undecided
+     otherwise;
+  2.-5. the trends, each a one-sided Welch test at 5 % on the seeds that
+     t_r(1) of the first condition exceeds the second's: met when shown
+     (the 90 % interval above 0), not met when the reverse is shown (below
+     0), undecided otherwise:
+  2. a heavier bed rises slower: 227.47 g against 177.46 g (1.83 m/s);
+  3. a slower gas rises slower: 1.83 m/s against 2.134 m/s (177.46 g);
   and on the held-out conditions, the two trends the experiment shows there:
-  4. small intruders rise slower: t_r(1) of two small > of two large
+  4. small intruders rise slower: two small against two large
      (2.134 m/s, 177.46 g);
-  5. a slower gas rises slower with four intruders: t_r(1) at 1.83 m/s >
-     at 2.134 m/s (177.46 g).
+  5. a slower gas rises slower with four intruders: 1.83 m/s against
+     2.134 m/s (177.46 g).
 
-A trend holds when the difference's 95 % interval (Welch) lies above 0.
+A condition with fewer than MIN_SEEDS finished seeds gets no verdict ("too
+few seeds"), nor a trend that uses it. Beside each verdict, not counted:
+ASME V&V 20's comparison error E = S - D with its validation uncertainty
+u_val = sqrt(u_num^2 + u_input^2 + u_D^2), u_D the experiment's standard
+error of the mean, u_input and u_num from the tables <condition>.dat of
+the folder -uncertainty (by default <run dir>/uncertainty), each a '#'
+header line 'rank u_input u_num' (either may be left out; nan: not
+estimated) and a row for each k; u_val from the terms known when not; and
+the spread ratio s_sim/s_exp (the seeds' standard deviation over the
+repeats').
+
 The surface is the height below which 99 % of the glass centres lie; 95 %
 and 99.9 % bracket it (their means are printed).
 
 An intruder that has not risen by a seed's end time is censored: its rise
 time is only known to exceed the end time. Where a condition has censored
 seeds, the mean is given as a lower bound (the censored taken at their end
-time, marked >=); criterion 1 then fails if even that bound's interval lies
-above the experiment's and is undecided otherwise. A trend holds if it holds
-with the censored at their end times and the condition expected to be
-faster has none (a bound on the slower one only understates the
-difference); it is undecided when it would hold but the faster condition
-has censored seeds, or would not hold and either has.
+time, marked >=); criterion 1 is then not met if even that bound's 90 %
+interval lies above +Delta, and undecided otherwise. A trend is met if it is
+shown with the censored at their end times and the condition expected to
+be faster has none (a bound on the slower one only understates the
+difference), not met if the reverse is shown and the slower one has none,
+undecided otherwise.
 
-  compare.py <run dir> [-reference <dir>] [-figure <png>] [-perSeed]
+  compare.py <run dir> [-reference <dir>] [-uncertainty <dir>] [-figure <png>] [-perSeed]
 
 -figure draws each condition's rise times, the seeds' beside the
 experiment's repeats, with the means and their intervals. -perSeed also
@@ -39,14 +59,15 @@ prints each seed's rise times (surface at 99 %; >= a censored one, at its
 end time): the record a results page keeps.
 """
 
+import math
 import os
 import re
 import sys
 
 import numpy as np
-from scipy import stats
 
 try:
+    from dpmfoam2d import statistics
     from dpmfoam2d.tables import read_dat
 except ModuleNotFoundError as e:
     if not (e.name or "").startswith("dpmfoam2d"):
@@ -63,15 +84,11 @@ TRENDS = (("heavier bed rises slower", "U183_M227_1L", "U183_M177_1L"),
           ("slower gas rises slower", "U183_M177_1L", "U214_M177_4L"),
           ("small intruders rise slower", "U214_M177_2S", "U214_M177_2L"),
           ("slower gas rises slower, four intruders", "U183_M177_4L", "U214_M177_4L"))
-
-
-def interval(x):
-    """Mean and half-width of its 95 % t-interval (nan for one value)."""
-    x = np.asarray(x, dtype=float)
-    n = len(x)
-    if n < 2:
-        return (x.mean() if n else np.nan), np.nan
-    return x.mean(), stats.t.ppf(0.975, n - 1) * x.std(ddof=1) / np.sqrt(n)
+MIN_SEEDS = 8       # the project's rule: a validation verdict needs 8 seeds a condition
+ALPHA = 0.05        # every test's level: TOST's 90 % interval, the trends' one-sided tests
+MARGIN_SDS = 2      # criterion 1's margin Delta, in the experiment's repeat standard deviations
+K_VAL = 2           # ASME V&V 20: |E| against K_VAL u_val
+UNCERTAINTY = ("u_input", "u_num")
 
 
 COLUMNS = ["rank"] + ["riseTime_q%g" % q for q in FRACTIONS]
@@ -179,17 +196,38 @@ def simulated(run, condition, intruders):
             np.array([c for _, c in found], dtype=bool).reshape(-1, intruders, len(FRACTIONS)))
 
 
-def welch_above_zero(a, b):
-    """Is mean(a) - mean(b) > 0 with 95 % confidence (Welch's interval)?"""
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    if len(a) < 2 or len(b) < 2:
-        return None, np.nan, np.nan
-    va, vb = a.var(ddof=1) / len(a), b.var(ddof=1) / len(b)
-    if va + vb == 0:            # no spread (every seed censored at one end time)
-        return bool(a.mean() > b.mean()), a.mean() - b.mean(), 0.0
-    dof = (va + vb)**2 / (va**2 / (len(a) - 1) + vb**2 / (len(b) - 1))
-    d, h = a.mean() - b.mean(), stats.t.ppf(0.975, dof) * np.sqrt(va + vb)
-    return bool(d - h > 0), d, h      # a bool, not numpy's: the verdicts test `is False`
+def uncertainties(folder, condition, intruders):
+    """{k: {"u_input": s, "u_num": s}} of a condition from its table
+    <folder>/<condition>.dat ('#' header 'rank u_input u_num', either
+    column may be left out, nan where not estimated; a row for each rank),
+    checked: refused naming the file otherwise; {} when there is none."""
+    path = os.path.join(folder, condition + ".dat")
+    if not os.path.isfile(path):
+        return {}
+    try:
+        columns = read_dat(path)
+    except ValueError as e:
+        refuse("%s (the condition's uncertainties: '# rank u_input u_num', then a row for "
+               "each k)" % e)
+    names = list(columns)
+    extra = [c for c in names if c not in ("rank",) + UNCERTAINTY]
+    if "rank" not in names or extra or not any(c in names for c in UNCERTAINTY):
+        refuse("%s: columns %s; 'rank' and one or both of %s expected"
+               % (path, " ".join(names), ", ".join(UNCERTAINTY)))
+    rank = columns["rank"]
+    if not np.array_equal(np.sort(rank), np.arange(1, intruders + 1)):
+        refuse("%s: ranks %s; a row for each of 1 to %d (the condition's intruders)"
+               % (path, " ".join("%g" % r for r in rank), intruders))
+    found = {}
+    for row, k in enumerate(rank):
+        found[int(k)] = {}
+        for c in UNCERTAINTY:
+            u = float(columns[c][row]) if c in columns else math.nan
+            if not (math.isnan(u) or (math.isfinite(u) and u >= 0)):
+                refuse("%s: rank %d, %s = %g: a standard uncertainty in s (>= 0, or nan "
+                       "where not estimated)" % (path, k, c, u))
+            found[int(k)][c] = u
+    return found
 
 
 def print_per_seed(run, conditions, intruders):
@@ -219,7 +257,7 @@ def draw(drawn, path):
                                            (k + 0.15, sim[:, k], "C0", "simulated")):
                 ax.plot(np.full(len(data), x), data, "o", ms=3, color=colour, alpha=0.6,
                         label=label if k == 0 else None)
-                m, h = interval(data)
+                m, h = statistics.mean_interval(data)
                 ax.errorbar(x + 0.1, m, yerr=h if np.isfinite(h) else None, fmt="D", ms=4, lw=1.5,
                             color=colour, capsize=3)
             if cens[:, k].any():        # not risen by the end time: at it, open
@@ -238,18 +276,26 @@ def draw(drawn, path):
 
 
 def arguments(argv):
-    """run, reference, figure, perSeed from the command line, checked."""
+    """run, reference, uncertainty, figure, perSeed from the command line,
+    checked."""
     if not argv or argv[0].startswith("-"):
         sys.exit(__doc__)
-    run, reference, figure, per_seed = argv[0], REFERENCE, None, False
+    run, reference, uncertainty, figure, per_seed = argv[0], REFERENCE, None, None, False
+    values = {"-reference": "the experiment's measurements folder",
+              "-uncertainty": "a folder of <condition>.dat tables of u_input and u_num",
+              "-figure": "a .png"}
     i = 1
     while i < len(argv):
-        if argv[i] in ("-reference", "-figure"):
+        if argv[i] in values:
             if i + 1 == len(argv):
-                refuse("%s needs a value (%s)" % (argv[i], "the experiment's measurements folder"
-                                                  if argv[i] == "-reference" else "a .png"))
+                refuse("%s needs a value (%s)" % (argv[i], values[argv[i]]))
             if argv[i] == "-reference":
                 reference = argv[i + 1]
+            elif argv[i] == "-uncertainty":
+                uncertainty = argv[i + 1]
+                if not os.path.isdir(uncertainty):
+                    refuse("-uncertainty %s: no such folder (%s)"
+                           % (uncertainty, values["-uncertainty"]))
             else:
                 figure = argv[i + 1]
             i += 2
@@ -257,12 +303,14 @@ def arguments(argv):
             per_seed, i = True, i + 1
         else:
             refuse("unknown argument '%s' (compare.py <run dir> [-reference <dir>] "
-                   "[-figure <png>] [-perSeed])" % argv[i])
+                   "[-uncertainty <dir>] [-figure <png>] [-perSeed])" % argv[i])
     if not os.path.isdir(run):
         refuse("no run folder %s" % run)
     if not os.path.isdir(reference):
         refuse("no reference folder %s (the experiment's measurements/: -reference <dir>, or "
                "the shared reference beside the repository, README.md)" % reference)
+    if uncertainty is None:
+        uncertainty = os.path.join(run, "uncertainty")
     if figure is not None:
         folder = os.path.dirname(figure) or "."
         if not os.path.isdir(folder):
@@ -275,11 +323,62 @@ def arguments(argv):
         formats = Figure().canvas.get_supported_filetypes()
         if os.path.splitext(figure)[1].lstrip(".").lower() not in formats:
             refuse("-figure %s: a file name ending in .%s" % (figure, ", .".join(sorted(formats))))
-    return run, reference, figure, per_seed
+    return run, reference, uncertainty, figure, per_seed
+
+
+def equivalence(sim, censored, exp):
+    """Criterion 1 for one condition and k: (verdict, Tost). sim: the
+    seeds' rise times (the censored at their end time), exp: the repeats'."""
+    margin = MARGIN_SDS * float(np.std(exp, ddof=1)) if len(exp) > 1 else math.nan
+    test = statistics.tost(sim, exp, margin, ALPHA)
+    if len(sim) < MIN_SEEDS:
+        return "too few seeds (n < %d)" % MIN_SEEDS, test
+    if test.outcome is None:
+        return "undecided (no spread measured)", test
+    if censored:        # a lower bound: only "above the margin" is certain
+        return ("not met" if test.low >= margin else "undecided (censored seeds)"), test
+    return {statistics.EQUIVALENT: "met", statistics.NOT_EQUIVALENT: "not met",
+            statistics.UNDECIDED: "undecided"}[test.outcome], test
+
+
+def trend(a, b, censored_a=False, censored_b=False, simulated=True):
+    """A trend: t_r(1) of a exceeds b's, a one-sided Welch test at ALPHA.
+    (verdict, OneSided). The simulated ones need MIN_SEEDS seeds on each
+    side; a censored slower side (a) can only understate a shown trend, a
+    censored faster side (b) only understate a shown reverse."""
+    test = statistics.one_sided(a, b, ALPHA)
+    if simulated and min(len(a), len(b)) < MIN_SEEDS:
+        return "too few seeds (n < %d)" % MIN_SEEDS, test
+    if test.outcome is None:
+        return "undecided (no spread measured)", test
+    if test.outcome == "greater":
+        return ("undecided (censored seeds)" if censored_b else "met"), test
+    if test.outcome == "less":
+        return ("undecided (censored seeds)" if censored_a else "not met (the reverse shown)"), \
+            test
+    return ("undecided (censored seeds)" if censored_a or censored_b else "undecided"), test
+
+
+def vv20(sim, exp, u):
+    """ASME V&V 20 for one condition and k: (E, u_val, the terms not
+    estimated). u: this k's {"u_input": s, "u_num": s} (nan or absent: not
+    estimated)."""
+    e = float(np.mean(sim) - np.mean(exp))
+    u_D = float(np.std(exp, ddof=1) / math.sqrt(len(exp))) if len(exp) > 1 else math.nan
+    u_val, missing = statistics.validation_uncertainty(u_D, u.get("u_input"), u.get("u_num"))
+    return e, u_val, missing
+
+
+def verdict_word(verdict):
+    """The count a verdict goes to in the summary."""
+    for word in ("met", "not met", "too few seeds"):
+        if verdict.startswith(word) and (word != "met" or verdict == "met"):
+            return word
+    return "undecided"
 
 
 def main(argv):
-    run, reference, figure, per_seed = arguments(argv)
+    run, reference, uncertainty, figure, per_seed = arguments(argv)
     conditions = sorted({SEED.match(name).group(1) for name in os.listdir(run)
                          if SEED.match(name) and os.path.isdir(os.path.join(run, name))})
     if not conditions:
@@ -294,55 +393,85 @@ def main(argv):
     exps = {c: experiment(reference, c) for c in conditions}
     intruders = {c: exps[c].shape[1] for c in conditions}
     sims = {c: simulated(run, c, intruders[c]) for c in conditions}
-    print("| condition | k | seeds | simulated t_r, s | experiment t_r, s | overlap |"
-          " surface 95 % / 99.9 % | not risen |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- |")
+    us = {c: uncertainties(uncertainty, c, intruders[c]) for c in conditions}
+    print("Criterion 1: TOST at %g %% within +-Delta (%g times the experiment's repeat "
+          "standard deviation), %d seeds or more; V&V 20: |E| against %d u_val, not a verdict"
+          % (100 * ALPHA, MARGIN_SDS, MIN_SEEDS, K_VAL))
+    print()
+    print("| condition | k | seeds | simulated t_r, s | experiment t_r, s | S - D, s |"
+          " 90 %% interval, s | Delta, s | TOST p | criterion 1 | u_val, s |"
+          " abs(E) vs %d u_val, s | s_sim/s_exp | surface 95 %% / 99.9 %% | not risen |" % K_VAL)
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- "
+          "| --- |")
     first = {}
-    passed = []
+    verdicts = []
     drawn = []
+    not_estimated = {}
     for c in conditions:
         (sim, cens), exp = sims[c], exps[c]
         if not len(sim):
             continue
         drawn.append((c, sim[:, :, SURFACE], cens[:, :, SURFACE], exp))
-        first[c] = (sim[:, 0, SURFACE], exp[:, 0], cens[:, 0, SURFACE].any())
+        first[c] = (sim[:, 0, SURFACE], exp[:, 0], bool(cens[:, 0, SURFACE].any()))
         for k in range(exp.shape[1]):
-            m, h = interval(sim[:, k, SURFACE])
-            me, he = interval(exp[:, k])
+            x = sim[:, k, SURFACE]
             n_cens = int(cens[:, k, SURFACE].sum())
-            overlap = bool(abs(m - me) <= h + he) if np.isfinite(h) else None
-            if n_cens and overlap is not None:
-                overlap = False if m - h > me + he else None
-            passed.append(overlap)
+            verdict, test = equivalence(x, n_cens > 0, exp[:, k])
+            verdicts.append(verdict)
+            m, h = statistics.mean_interval(x)
+            me, he = statistics.mean_interval(exp[:, k])
+            e, u_val, missing = vv20(x, exp[:, k], us[c].get(k + 1, {}))
+            if missing:
+                not_estimated.setdefault(", ".join(missing), []).append("%s k %d" % (c, k + 1))
+            s_sim = float(np.std(x, ddof=1)) if len(x) > 1 else math.nan
             bounds = ["%s%.2f" % (">=" if cens[:, k, j].any() else "", sim[:, k, j].mean())
                       for j in (0, 2)]
-            print("| %s | %d | %d | %s%.2f +- %.2f | %.2f +- %.2f | %s | %s / %s | %d |"
-                  % (c, k + 1, len(sim), ">=" if n_cens else "", m, h, me, he,
-                     {True: "yes", False: "no", None: "-"}[overlap], bounds[0], bounds[1],
-                     n_cens))
+            lower = ">=" if n_cens else ""
+            print("| %s | %d | %d | %s%.2f +- %.2f | %.2f +- %.2f | %s%.2f | %s | %.2f | %s | %s "
+                  "| %.2f%s | %.2f %s %.2f | %.2f | %s / %s | %d |"
+                  % (c, k + 1, len(sim), lower, m, h, me, he, lower, e,
+                     "%.2f to %.2f" % (test.low, test.high) if math.isfinite(test.low) else "-",
+                     test.margin, "%.3f" % test.p if math.isfinite(test.p) else "-", verdict,
+                     u_val, " (u_D alone)" if len(missing) == 2 else
+                     " (without %s)" % missing[0] if missing else "",
+                     abs(e), "<=" if abs(e) <= K_VAL * u_val else ">", K_VAL * u_val,
+                     s_sim * MARGIN_SDS / test.margin, bounds[0], bounds[1], n_cens))
+    for terms, where in not_estimated.items():
+        print("\n%s not estimated (no table %s, or nan there) for %s: u_val from the other "
+              "terms, a lower bound of V&V 20's"
+              % (terms, os.path.join(uncertainty, "<condition>.dat"), ", ".join(where)))
     print()
     for name, a, b in TRENDS:
         if a in first and b in first:
             for which, j in (("simulated", 0), ("experiment", 1)):
-                ok, d, h = welch_above_zero(first[a][j], first[b][j])
-                slower, faster = (first[a][2], first[b][2]) if which == "simulated" \
+                cens_a, cens_b = (first[a][2], first[b][2]) if which == "simulated" \
                     else (False, False)
-                verdict = {True: "holds", False: "not shown", None: "too few"}[ok]
-                if (ok is True and faster) or (ok is False and (slower or faster)):
-                    ok, verdict = None, "undecided (censored seeds)"
-                print("%s, %s: t_r(1) %s - %s = %.2f +- %.2f s: %s"
-                      % (name, which, a, b, d, h, verdict))
+                verdict, test = trend(first[a][j], first[b][j], cens_a, cens_b,
+                                      which == "simulated")
+                d = test.difference
+                low, high = d.interval(1 - 2 * ALPHA)
+                if which == "experiment":       # the repeats' own trend, not a criterion
+                    verdict = {"met": "shown", "not met (the reverse shown)": "reverse shown",
+                               "undecided": "not shown"}.get(verdict, verdict)
+                print("%s, %s: t_r(1) %s - %s = %.2f s, 90 %% interval %s, one-sided p %s: %s"
+                      % (name, which, a, b, d.difference,
+                         "%.2f to %.2f" % (low, high) if math.isfinite(low) else "-",
+                         "%.3f" % test.p_greater if math.isfinite(test.p_greater) else "-",
+                         verdict))
                 if which == "simulated":
-                    passed.append(ok)
+                    verdicts.append(verdict)
     if per_seed:
         print_per_seed(run, conditions, intruders)
     if figure and drawn:
         draw(drawn, figure)
     elif figure:
         print("no figure %s: no seed has finished (riseOrder.dat)" % figure)
-    decided = [p for p in passed if p is not None]
-    print("\ncriteria met: %d of %d decided (%d undecided)"
-          % (sum(decided), len(decided), len(passed) - len(decided)))
+    counts = {w: 0 for w in ("met", "not met", "undecided", "too few seeds")}
+    for v in verdicts:
+        counts[verdict_word(v)] += 1
+    print("\ncriteria: met %d of %d, not met %d, undecided %d, too few seeds %d"
+          % (counts["met"], len(verdicts), counts["not met"], counts["undecided"],
+             counts["too few seeds"]))
 
 
 if __name__ == "__main__":

@@ -18,6 +18,8 @@ Modules:
                     (dpmRiseTime)
     pictures        snapshots, movies, M(t) plots, ParaView (dpmSnapshot,
                     dpmMovie, dpmPlotMixing, dpmPictures, dpmParaView)
+    statistics      Welch intervals, equivalence tests (TOST) and V&V 20's
+                    validation uncertainty, for comparisons with experiments
     study           the study runner and its results (dpmStudy)
 """
 

@@ -2,35 +2,46 @@
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
 # benchmarks/netlSegregationValidation/compare.py on synthetic rise times
-# whose statistics are known in closed form: three seeds and three repeats
-# per condition, so each 95 % interval is t(0.975, 2) s / sqrt(3) with
-# Student's t(0.975, 2) = 4.302653 (Welch's difference of two such sets of
-# spread 1: 2.776445 sqrt(2/3), its t at 4 degrees of freedom). Checked: the
-# means and intervals, each overlap verdict (yes; no; no for a censored
-# seed whose lower bound lies above; undecided for one whose bound does
-# not), the surface's bracket with its censored bound, the trends (holds,
-# not shown, undecided with a censored seed in either condition where it
-# would not hold, or in the faster one where it would; the held-out
-# conditions' two), the count of criteria met and the per-seed record.
-# Then the experiment's means and intervals from its own files, all eight
-# conditions, against the table of LaMarche et al. (2022) in the reference
-# folder's SOURCES.md.
+# whose statistics are known, and dpmfoam2d.statistics under it
+# (netlStatistics.py: Welch, TOST, the one-sided tests and V&V 20's u_val
+# against values computed independently). The synthetic repeats and seeds
+# are P = (-1.5, -1, -0.5, 0, 0, 0.5, 1, 1.5), of standard deviation 1,
+# scaled and shifted: 8 repeats of sd 1 (the margin Delta = 2 sd = 2 s) against
+# 8 seeds of sd 0.5. Each row's expected cells are computed here from the
+# formulas (Welch-Satterthwaite by hand, quantiles from scipy.stats.t).
+# Checked: equal means met; 1.5 margins apart not met; 1.8 s apart undecided;
+# a censored seed not met when even the bound lies above the margin,
+# undecided otherwise; the same seeds as a met condition, but 3, too few
+# (no verdict); the trends met, the reverse shown (not met), undecided
+# with a censored seed on the side that could undo it; V&V 20's u_val with
+# both tables' terms, one, or none (u_D alone), from the run folder's
+# uncertainty/ or -uncertainty; a bad uncertainty table refused; the
+# spread ratio; the count line; the per-seed record; the experiment's
+# means and intervals from its own files against the published table.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 compare=$testsDir/../benchmarks/netlSegregationValidation/compare.py
 reference=$testsDir/../../shared/reference/netlSegregation2022/measurements
 py() { /usr/bin/python3 "$@"; }
 
+py "$testsDir/validation/netlStatistics.py" || fail "dpmfoam2d.statistics against independent values"
+
 cd "$workDir" || fail "work directory"
 py - <<'PY' || fail "synthetic rise times"
 import os
 nan = float("nan")
+P = [-1.5, -1, -0.5, 0, 0, 0.5, 1, 1.5]          # sd 1
 os.makedirs("experiment")
 def table(path, rows):
     with open(path, "w") as f:
         f.writelines("\t".join("%g" % v for v in r) + "\n" for r in rows)
-table("experiment/U214_M177_4L.txt", [[4, 7.1, 8, 9], [5, 8.1, 9, 10], [6, 9.1, 10, 11]])
-table("experiment/U183_M177_1L.txt", [[7], [8], [9]])
-table("experiment/U183_M227_1L.txt", [[11], [12], [13]])
+def repeats(*bases):
+    return [[b + p for b in bases] for p in P]
+table("experiment/U183_M177_1L.txt", repeats(8))
+table("experiment/U183_M227_1L.txt", repeats(12))
+table("experiment/U214_M177_4L.txt", repeats(5, 6, 7, 8))
+table("experiment/U214_M177_2L.txt", repeats(5, 6))
+table("experiment/U214_M177_2S.txt", repeats(9, 10))
+table("experiment/U183_M177_4L.txt", repeats(8, 9, 10, 11))
 def seed(run, name, end, rows):
     """rows: [t(q 0.95), t(0.99), t(0.999)] for each rank, as dpmRiseTime writes them."""
     os.makedirs(os.path.join(run, name, "system"))
@@ -41,121 +52,208 @@ def seed(run, name, end, rows):
     with open(os.path.join(out, "riseOrder.dat"), "w") as f:
         f.write("# rank\triseTime_q0.95\triseTime_q0.99\triseTime_q0.999\n")
         f.writelines("%d\t%g\t%g\t%g\n" % ((k + 1,) + tuple(r)) for k, r in enumerate(rows))
-# four intruders; the third seed's last two not risen by 24 s at q 0.99 and 0.999
-for k, t99 in enumerate(([9, 11, 12, 23], [10, 12, 13, 23.5], [11, 13, nan, nan])):
-    t95 = [10.5, 12.5, 20, 22] if k == 2 else [t - 0.5 for t in t99]
-    seed("run", "U214_M177_4L_seed%d" % (k + 1), 24,
-         [[a, b, b + 1] for a, b in zip(t95, t99)])
-for k, t in enumerate((7, 8, 9)):
-    seed("run", "U183_M177_1L_seed%d" % (k + 1), 24, [[t - 0.5, t, t + 1]])
-for k, t in enumerate((12, 13, 14)):
-    seed("run", "U183_M227_1L_seed%d" % (k + 1), 36, [[t - 0.5, t, t + 1]])
-# a second run: the heavier bed's third seed not risen by 36 s
-for k, t in enumerate((7, 8, 9)):
-    seed("censored", "U183_M177_1L_seed%d" % (k + 1), 24, [[t, t, t]])
-for k, t in enumerate((8, 9, nan)):
-    seed("censored", "U183_M227_1L_seed%d" % (k + 1), 36, [[t, t, t]])
-# a third: the lighter bed's third seed not risen by 24 s, the heavier one's
-# far later (a run of 72 s): the difference would hold, but the lighter
-# bed's bound may understate its mean
-for k, t in enumerate((7, 8, nan)):
-    seed("fasterCensored", "U183_M177_1L_seed%d" % (k + 1), 24, [[t, t, t]])
-for k, t in enumerate((60, 61, 62)):
-    seed("fasterCensored", "U183_M227_1L_seed%d" % (k + 1), 72, [[t, t, t]])
-# the held-out conditions' trends: small intruders 1 s later than large (not
-# shown by three seeds of spread 1), four at 1.83 m/s 3 s later than at 2.134
-table("experiment/U214_M177_2L.txt", [[5, 6], [6, 7], [7, 8]])
-table("experiment/U214_M177_2S.txt", [[9, 10], [10, 11], [11, 12]])
-table("experiment/U183_M177_4L.txt", [[7, 8, 9, 10], [8, 9, 10, 11], [9, 10, 11, 12]])
-for k, t in enumerate((5, 6, 7)):
-    seed("heldOut", "U214_M177_2L_seed%d" % (k + 1), 24, [[t, t, t], [t + 1, t + 1, t + 1]])
-    seed("heldOut", "U214_M177_2S_seed%d" % (k + 1), 36, [[t + 1, t + 1, t + 1], [t + 2, t + 2, t + 2]])
-for k, t in enumerate((9, 10, 11)):
-    seed("heldOut", "U214_M177_4L_seed%d" % (k + 1), 24, [[t + j, t + j, t + j] for j in range(4)])
-    seed("heldOut", "U183_M177_4L_seed%d" % (k + 1), 30, [[t + 3 + j] * 3 for j in range(4)])
+def bracket(*t99):
+    """[t95, t99, t999] of each rank: the surface's bracket 0.5 s earlier, 1 s later."""
+    return [[t - 0.5, t, t + 1] for t in t99]
+def same(*t):
+    return [[v, v, v] for v in t]
+# run: equal means (met), 1.5 margins apart (not met), and four intruders:
+# k 1 1.8 s late (undecided), k 2 on the experiment's (met), k 3 and 4 with
+# the 8th seed not risen by 24 s (at q 0.99 and 0.999; risen at 0.95 by 20
+# and 22 s): k 3's bound near the experiment's (undecided), k 4's 13 s late
+for i, p in enumerate(P):
+    seed("run", "U183_M177_1L_seed%d" % (i + 1), 24, bracket(8 + 0.5 * p))
+    seed("run", "U183_M227_1L_seed%d" % (i + 1), 36, bracket(15 + 0.5 * p))
+    rows = bracket(6.8 + 0.5 * p, 6 + 0.5 * p, 7 + 0.5 * p, 20 + 0.5 * p)
+    if i == 7:
+        rows[2:] = [[20, nan, nan], [22, nan, nan]]
+    seed("run", "U214_M177_4L_seed%d" % (i + 1), 24, rows)
+os.makedirs("run/uncertainty")
+with open("run/uncertainty/U183_M177_1L.dat", "w") as f:
+    f.write("# rank u_input u_num\n1 0.4 0.3\n")
+with open("run/uncertainty/U183_M227_1L.dat", "w") as f:
+    f.write("# rank u_num\n1 0.5\n")
+# fewSeeds: the first three of run's equal means: too few for a verdict
+for i, p in enumerate((-1, 0, 1)):
+    seed("fewSeeds", "U183_M177_1L_seed%d" % (i + 1), 24, bracket(8 + 0.5 * p))
+    seed("fewSeeds", "U183_M227_1L_seed%d" % (i + 1), 36, bracket(15 + 0.5 * p))
+# censored: the heavier bed's 8th seed not risen by a short end time (9 s),
+# the others 3 s early: the reverse of the trend shown, but on a bound
+for i, p in enumerate(P):
+    seed("censored", "U183_M177_1L_seed%d" % (i + 1), 24, same(8 + 0.5 * p))
+    seed("censored", "U183_M227_1L_seed%d" % (i + 1), 9,
+         same(nan if i == 7 else 5 + 0.2 * p))
+# fasterCensored: the trend shown, but the faster condition's 8th seed not
+# risen by 24 s: its bound may understate its mean
+for i, p in enumerate(P):
+    seed("fasterCensored", "U183_M177_1L_seed%d" % (i + 1), 24, same(nan if i == 7 else 8 + 0.5 * p))
+    seed("fasterCensored", "U183_M227_1L_seed%d" % (i + 1), 72, same(60 + p))
+# heldOut: small intruders 1 s earlier than large (the reverse shown), four
+# at 1.83 m/s 3 s later than at 2.134 (shown), all of sd 1
+for i, p in enumerate(P):
+    seed("heldOut", "U214_M177_2L_seed%d" % (i + 1), 24, same(5 + p, 6 + p))
+    seed("heldOut", "U214_M177_2S_seed%d" % (i + 1), 36, same(4 + p, 5 + p))
+    seed("heldOut", "U214_M177_4L_seed%d" % (i + 1), 24, same(9 + p, 10 + p, 11 + p, 12 + p))
+    seed("heldOut", "U183_M177_4L_seed%d" % (i + 1), 30, same(12 + p, 13 + p, 14 + p, 15 + p))
 PY
 
 py "$compare" run -reference experiment -figure rise.png > log.compare 2>&1 \
     || { cat log.compare; fail "compare.py"; }
 cat log.compare
 [ -s rise.png ] || fail "no figure"
-py - <<'PY' || fail "the statistics of the synthetic rise times"
+py - <<'PY' || fail "the statistics and verdicts of the synthetic rise times"
 import math, sys
-t2, t4 = 4.302653, 2.776445          # Student's t(0.975, 2) and t(0.975, 4)
+import numpy as np
+from scipy import stats
+P = np.array([-1.5, -1, -0.5, 0, 0, 0.5, 1, 1.5])
 def ci(x):
-    m = sum(x) / len(x)
-    s = math.sqrt(sum((v - m)**2 for v in x) / (len(x) - 1))
-    return "%.2f +- %.2f" % (m, t2 * s / math.sqrt(len(x)))
+    x = np.asarray(x, float)
+    return "%.2f +- %.2f" % (x.mean(), stats.t.ppf(0.975, len(x) - 1) * x.std(ddof=1) / math.sqrt(len(x)))
+def welch(a, b):
+    """difference, 90 % interval by hand (Welch-Satterthwaite), TOST p at margin 2 sd(b)"""
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    qa, qb = a.var(ddof=1) / len(a), b.var(ddof=1) / len(b)
+    dof = (qa + qb)**2 / (qa**2 / (len(a) - 1) + qb**2 / (len(b) - 1))
+    se, d, margin = math.sqrt(qa + qb), a.mean() - b.mean(), 2 * b.std(ddof=1)
+    h = stats.t.ppf(0.95, dof) * se
+    p = max(stats.t.sf((d + margin) / se, dof), stats.t.cdf((d - margin) / se, dof))
+    return d, d - h, d + h, margin, p
+def row(c, k, sim, exp, verdict, u_terms, surfaces, censored, lower=""):
+    """The expected cells: u_terms are (u_input, u_num), None where not estimated."""
+    d, lo, hi, margin, p = welch(sim, exp)
+    u_D = np.std(exp, ddof=1) / math.sqrt(len(exp))
+    u = math.sqrt(u_D**2 + sum(v**2 for v in u_terms if v is not None))
+    note = " (u_D alone)" if u_terms == (None, None) else \
+        " (without u_input)" if u_terms[0] is None else " (without u_num)" if u_terms[1] is None else ""
+    e = np.mean(sim) - np.mean(exp)
+    return [c, str(k), str(len(sim)), lower + ci(sim), ci(exp), "%s%.2f" % (lower, d),
+            "%.2f to %.2f" % (lo, hi), "%.2f" % margin, "%.3f" % p, verdict, "%.2f%s" % (u, note),
+            "%.2f %s %.2f" % (abs(e), "<=" if abs(e) <= 2 * u else ">", 2 * u),
+            "%.2f" % (np.std(sim, ddof=1) / np.std(exp, ddof=1)), surfaces, str(censored)]
 rows = {}
 for line in open("log.compare"):
     cells = [c.strip() for c in line.strip().strip("|").split("|")]
-    if len(cells) == 8 and cells[0].startswith("U"):
+    if len(cells) == 15 and cells[0].startswith("U"):
         rows[(cells[0], int(cells[1]))] = cells
-# condition, k: simulated (censored at their end time), experiment, overlap,
-# surface 95 % / 99.9 %, not risen
+k3 = np.r_[7 + 0.5 * P[:7], 24]          # the 8th seed at its end time
+k4 = np.r_[20 + 0.5 * P[:7], 24]
 expected = {
-    ("U214_M177_4L", 1): (ci([9, 10, 11]), ci([4, 5, 6]), "no", "9.50 / 11.00", "0"),
-    ("U214_M177_4L", 2): (ci([11, 12, 13]), ci([7.1, 8.1, 9.1]), "yes", "11.50 / 13.00", "0"),
-    ("U214_M177_4L", 3): (">=" + ci([12, 13, 24]), ci([8, 9, 10]), "-", "14.67 / >=17.00", "1"),
-    ("U214_M177_4L", 4): (">=" + ci([23, 23.5, 24]), ci([9, 10, 11]), "no", "22.50 / >=24.17", "1"),
-    ("U183_M177_1L", 1): (ci([7, 8, 9]), ci([7, 8, 9]), "yes", "7.50 / 9.00", "0"),
-    ("U183_M227_1L", 1): (ci([12, 13, 14]), ci([11, 12, 13]), "yes", "12.50 / 14.00", "0"),
+    ("U183_M177_1L", 1): row("U183_M177_1L", 1, 8 + 0.5 * P, 8 + P, "met", (0.4, 0.3),
+                             "7.50 / 9.00", 0),
+    ("U183_M227_1L", 1): row("U183_M227_1L", 1, 15 + 0.5 * P, 12 + P, "not met", (None, 0.5),
+                             "14.50 / 16.00", 0),
+    ("U214_M177_4L", 1): row("U214_M177_4L", 1, 6.8 + 0.5 * P, 5 + P, "undecided", (None, None),
+                             "6.30 / 7.80", 0),
+    ("U214_M177_4L", 2): row("U214_M177_4L", 2, 6 + 0.5 * P, 6 + P, "met", (None, None),
+                             "5.50 / 7.00", 0),
+    ("U214_M177_4L", 3): row("U214_M177_4L", 3, k3, 7 + P, "undecided (censored seeds)",
+                             (None, None), "%.2f / >=%.2f" % (np.r_[k3[:7] - 0.5, 20].mean(),
+                                                             np.r_[k3[:7] + 1, 24].mean()), 1, ">="),
+    ("U214_M177_4L", 4): row("U214_M177_4L", 4, k4, 8 + P, "not met", (None, None),
+                             "%.2f / >=%.2f" % (np.r_[k4[:7] - 0.5, 22].mean(),
+                                                np.r_[k4[:7] + 1, 24].mean()), 1, ">="),
 }
 ok = len(rows) == len(expected)
-for key, (sim, exp, overlap, surfaces, censored) in expected.items():
-    got = rows.get(key, [""] * 8)
-    good = got[2] == "3" and got[3] == sim and got[4] == exp and got[5] == overlap \
-        and got[6] == surfaces and got[7] == censored
+for key, want in expected.items():
+    got = rows.get(key, [""] * 15)
+    good = got == want
     ok &= good
-    print("%s k %d: %s | %s | %s | %s | %s (expected %s | %s | %s | %s | %s): %s"
-          % (key + tuple(got[3:8]) + (sim, exp, overlap, surfaces, censored,
-                                      "ok" if good else "WRONG")))
+    print("%s k %d: %s\n  expected %s: %s" % (key + (" | ".join(got), " | ".join(want),
+                                                   "ok" if good else "WRONG")))
 text = open("log.compare").read()
-welch = t4 * math.sqrt(2.0 / 3.0)     # two sets of spread 1, three values each
-for line in ("heavier bed rises slower, simulated: t_r(1) U183_M227_1L - U183_M177_1L"
-             " = 5.00 +- %.2f s: holds" % welch,
-             "heavier bed rises slower, experiment: t_r(1) U183_M227_1L - U183_M177_1L"
-             " = 4.00 +- %.2f s: holds" % welch,
-             "slower gas rises slower, simulated: t_r(1) U183_M177_1L - U214_M177_4L"
-             " = -2.00 +- %.2f s: not shown" % welch,
-             "slower gas rises slower, experiment: t_r(1) U183_M177_1L - U214_M177_4L"
-             " = 3.00 +- %.2f s: holds" % welch,
-             "criteria met: 4 of 7 decided (1 undecided)"):
+def trend(name, a, b, tail):
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    qa, qb = a.var(ddof=1) / len(a), b.var(ddof=1) / len(b)
+    dof = (qa + qb)**2 / (qa**2 / (len(a) - 1) + qb**2 / (len(b) - 1))
+    d, se = a.mean() - b.mean(), math.sqrt(qa + qb)
+    h = stats.t.ppf(0.95, dof) * se
+    return "%s = %.2f s, 90 %% interval %.2f to %.2f, one-sided p %.3f: %s" \
+        % (name, d, d - h, d + h, stats.t.sf(d / se, dof), tail)
+for line in (trend("heavier bed rises slower, simulated: t_r(1) U183_M227_1L - U183_M177_1L",
+                   15 + 0.5 * P, 8 + 0.5 * P, "met"),
+             trend("heavier bed rises slower, experiment: t_r(1) U183_M227_1L - U183_M177_1L",
+                   12 + P, 8 + P, "shown"),
+             trend("slower gas rises slower, simulated: t_r(1) U183_M177_1L - U214_M177_4L",
+                   8 + 0.5 * P, 6.8 + 0.5 * P, "met"),
+             "u_input not estimated (no table run/uncertainty/<condition>.dat, or nan there) "
+             "for U183_M227_1L k 1",
+             "u_num, u_input not estimated (no table run/uncertainty/<condition>.dat, or nan "
+             "there) for U214_M177_4L k 1, U214_M177_4L k 2, U214_M177_4L k 3, U214_M177_4L k 4",
+             "criteria: met 4 of 8, not met 2, undecided 2, too few seeds 0"):
     good = line in text
     ok &= good
     print("%s: %s" % (line, "ok" if good else "MISSING"))
 sys.exit(0 if ok else 1)
 PY
 
+# The uncertainty tables from another folder; one that is not a table of
+# uncertainties refused, naming it
+mkdir elsewhere || fail "work directory"
+printf '# rank u_input u_num\n1 0.1 0.1\n2 0.1 0.1\n3 0.1 0.1\n4 0.1 0.1\n' > elsewhere/U214_M177_4L.dat
+py "$compare" run -reference experiment -uncertainty elsewhere > log.elsewhere 2>&1 \
+    || { cat log.elsewhere; fail "compare.py -uncertainty"; }
+u=$(py -c "import math; print('%.2f' % math.sqrt(0.02 + 1 / 8))")
+grep -q "| U214_M177_4L | 1 | 8 | .* | $u | " log.elsewhere \
+    || fail "-uncertainty: u_val $u of U214_M177_4L k 1 not in $(cat log.elsewhere)"
+grep -q "| U183_M177_1L | 1 | 8 | .* (u_D alone) |" log.elsewhere \
+    || fail "-uncertainty: run/uncertainty read although another folder was given"
+printf '# rank u_input u_num\n1 -0.4 0.3\n' > elsewhere/U183_M177_1L.dat
+py "$compare" run -reference experiment -uncertainty elsewhere > log.badTable 2>&1 \
+    && fail "a negative uncertainty accepted: $(cat log.badTable)"
+grep -q "elsewhere/U183_M177_1L.dat: rank 1, u_input = -0.4" log.badTable \
+    || fail "a bad uncertainty table not named: $(cat log.badTable)"
+printf '# rank u_numerical\n1 0.3\n' > elsewhere/U183_M177_1L.dat
+py "$compare" run -reference experiment -uncertainty elsewhere > log.badTable 2>&1 \
+    && fail "an unknown column accepted: $(cat log.badTable)"
+grep -q "elsewhere/U183_M177_1L.dat: columns rank u_numerical" log.badTable \
+    || fail "an unknown column not named: $(cat log.badTable)"
+
 # Each seed's record, the censored at their end time as bounds
 py "$compare" run -reference experiment -perSeed > log.perSeed 2>&1 \
     || { cat log.perSeed; fail "compare.py -perSeed"; }
-for row in "| U214_M177_4L | 1 | 9.00, 11.00, 12.00, 23.00 |" \
-           "| U214_M177_4L | 3 | 11.00, 13.00, >=24.00, >=24.00 |" \
-           "| U183_M227_1L | 2 | 13.00 |"
+for row in "| U214_M177_4L | 1 | 6.05, 5.25, 6.25, 19.25 |" \
+           "| U214_M177_4L | 8 | 7.55, 6.75, >=24.00, >=24.00 |" \
+           "| U183_M227_1L | 2 | 14.50 |"
 do
     grep -qF "$row" log.perSeed || fail "-perSeed: '$row' not in $(cat log.perSeed)"
 done
 
+# The same seeds as run's met condition, three of them: no verdict
+py "$compare" fewSeeds -reference experiment > log.fewSeeds 2>&1 \
+    || { cat log.fewSeeds; fail "compare.py on three seeds"; }
+grep -q "| U183_M177_1L | 1 | 3 | .* | too few seeds (n < 8) |" log.fewSeeds \
+    || fail "three seeds given a verdict: $(cat log.fewSeeds)"
+grep -q "heavier bed rises slower, simulated: .*: too few seeds (n < 8)" log.fewSeeds \
+    || fail "a trend on three seeds given a verdict: $(cat log.fewSeeds)"
+grep -q "criteria: met 0 of 3, not met 0, undecided 0, too few seeds 3" log.fewSeeds \
+    || fail "the count with too few seeds: $(cat log.fewSeeds)"
+
 py "$compare" censored -reference experiment > log.censored 2>&1 \
     || { cat log.censored; fail "compare.py on censored seeds"; }
 grep -q "heavier bed rises slower, simulated: .*: undecided (censored seeds)" log.censored \
-    || fail "a trend with a censored seed: $(cat log.censored)"
-grep -q "| U183_M227_1L | 1 | 3 | >=" log.censored \
-    || fail "a censored mean not given as a bound: $(cat log.censored)"
-grep -q "criteria met: 1 of 1 decided (2 undecided)" log.censored \
+    || fail "a reverse trend on a censored slower condition: $(cat log.censored)"
+grep -q "| U183_M227_1L | 1 | 8 | >=.* | undecided (censored seeds) |" log.censored \
+    || fail "a censored mean below the margin not undecided, or not a bound: $(cat log.censored)"
+grep -q "criteria: met 1 of 3, not met 0, undecided 2, too few seeds 0" log.censored \
     || fail "the count with undecided criteria: $(cat log.censored)"
 py "$compare" fasterCensored -reference experiment > log.fasterCensored 2>&1 \
     || { cat log.fasterCensored; fail "compare.py on a censored faster condition"; }
-grep -q "heavier bed rises slower, simulated: .* = 48.00 +- .*: undecided (censored seeds)" \
+grep -q "heavier bed rises slower, simulated: .*: undecided (censored seeds)" \
     log.fasterCensored || fail "a trend whose faster condition is censored: $(cat log.fasterCensored)"
 py "$compare" heldOut -reference experiment > log.heldOut 2>&1 \
     || { cat log.heldOut; fail "compare.py on the held-out conditions"; }
-welch=$(awk 'BEGIN { printf "%.2f", 2.776445 * sqrt(2 / 3) }')
-for line in "small intruders rise slower, simulated: t_r(1) U214_M177_2S - U214_M177_2L = 1.00 +- $welch s: not shown" \
-            "small intruders rise slower, experiment: t_r(1) U214_M177_2S - U214_M177_2L = 4.00 +- $welch s: holds" \
-            "slower gas rises slower, four intruders, simulated: t_r(1) U183_M177_4L - U214_M177_4L = 3.00 +- $welch s: holds" \
-            "slower gas rises slower, four intruders, experiment: t_r(1) U183_M177_4L - U214_M177_4L = 3.00 +- $welch s: holds"
+# two sets of 8 of sd 1: se 0.5, dof 14
+read -r h p1 p2 <<< "$(py -c "
+from scipy import stats
+print('%.2f %.3f %.3f' % (stats.t.ppf(0.95, 14) * 0.5, stats.t.sf(-2, 14), stats.t.sf(6, 14)))")"
+lo1=$(awk -v h=$h 'BEGIN { printf "%.2f to %.2f", -1 - h, -1 + h }')
+lo2=$(awk -v h=$h 'BEGIN { printf "%.2f to %.2f", 3 - h, 3 + h }')
+lo3=$(awk -v h=$h 'BEGIN { printf "%.2f to %.2f", 4 - h, 4 + h }')
+p3=$(py -c "from scipy import stats; print('%.3f' % stats.t.sf(8, 14))")
+for line in "small intruders rise slower, simulated: t_r(1) U214_M177_2S - U214_M177_2L = -1.00 s, 90 % interval $lo1, one-sided p $p1: not met (the reverse shown)" \
+            "small intruders rise slower, experiment: t_r(1) U214_M177_2S - U214_M177_2L = 4.00 s, 90 % interval $lo3, one-sided p $p3: shown" \
+            "slower gas rises slower, four intruders, simulated: t_r(1) U183_M177_4L - U214_M177_4L = 3.00 s, 90 % interval $lo2, one-sided p $p2: met" \
+            "criteria: met 3 of 14, not met 11, undecided 0, too few seeds 0"
 do
     grep -qF "$line" log.heldOut || fail "held-out trend: '$line' not in $(cat log.heldOut)"
 done
@@ -214,10 +312,24 @@ then
     do
         grep -q "$row |" log.published || fail "the experiment's table: '$row' not in $(cat log.published)"
     done
+    # the margins, twice the repeats' standard deviations: the published
+    # half-widths (rounded to 0.001 s) times 2 sqrt(n) / t(0.975, n - 1), to
+    # the last digit either way; one seed: too few for a verdict
+    read -r m1 m2 <<< "$(py -c "
+from scipy import stats
+def margin(h, n):
+    m = 2 * h * n**0.5 / stats.t.ppf(0.975, n - 1)
+    return r'\(%.2f\|%.2f\)' % (m - 0.005, m + 0.005)
+print(margin(0.312, 9), margin(0.939, 12))")"
+    for row in "U214_M177_4L | 1 | 1 | .* | 5.15 +- 0.31 | .* | - | $m1 | - | too few seeds (n < 8) |" \
+               "U183_M227_1L | 1 | 1 | .* | 11.92 +- 0.94 | .* | - | $m2 | - | too few seeds (n < 8) |"
+    do
+        grep -q "$row" log.published || fail "the experiment's margin: '$row' not in $(cat log.published)"
+    done
 elif [ -n "${DPMFOAM2D_REQUIRE_REFERENCE:-}" ]
 then
     fail "no reference folder $reference"
 else
     echo "no reference folder $reference: the published table is not checked"
 fi
-pass "the rise-time comparison's statistics and verdicts on synthetic seeds"
+pass "the rise-time comparison's statistics (Welch, TOST, V&V 20) and verdicts on synthetic seeds"
