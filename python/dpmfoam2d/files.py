@@ -67,3 +67,16 @@ def create_new(path):
     fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW | os.O_CLOEXEC,
                  0o666)
     return os.fdopen(fd, "w")
+
+
+def outside_case(case, rel):
+    """Where case/rel resolves to (its nearest existing folder's resolution
+    while it is not made yet) when that lies outside the case, else None:
+    a folder of the case that is a symbolic link to elsewhere would put
+    what a tool writes there outside the case. Links inside it are fine."""
+    top = os.path.realpath(case)
+    path = os.path.join(case, rel)
+    while not os.path.lexists(path) and os.path.dirname(path) not in ("", path):
+        path = os.path.dirname(path)
+    where = os.path.realpath(path or ".")
+    return None if where == top or where.startswith(top + os.sep) else where

@@ -34,7 +34,7 @@ import sys
 import numpy as np
 
 from . import particles as pio
-from .files import replacing
+from .files import outside_case, replacing
 
 OUT = os.path.join("postProcessing", "riseTime", "0")
 
@@ -161,6 +161,11 @@ def main(argv=None):
         refuse(str(e))
 
     out = os.path.join(a.case, OUT)
+    escape = outside_case(a.case, OUT)
+    if escape:
+        refuse("cannot write the tables into %s: it resolves to %s, outside the case (a "
+               "symbolic link); a run's tables are written only inside its case: remove the "
+               "link, and copy the tables after" % (out, escape))
     blocker = not_a_folder(a.case, OUT)
     if blocker:
         refuse("cannot write the tables into %s: %s is a file, not a folder; remove or "

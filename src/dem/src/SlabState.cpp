@@ -11,6 +11,7 @@
 // Version policy: as the 2D engine's (StateFile.cpp): this version only is written and
 // read, an older one (1-6) is refused naming the command that converts it.
 
+#include "RecordCompare.hpp"
 #include "StateIntegrity.hpp"
 #include "dem/StateConversion.hpp"
 #include "dem/Random.hpp"
@@ -272,7 +273,10 @@ void SlabSystem::load(const std::string& path)
         // The key as the disc engine's with the depth in the skin's place, which the
         // comparison leaves out: named on its own
         std::vector<Difference> differ = compareSettingsKeys(key, here, settings_);
-        if (!key.empty() && key[0] == here[0] && key.back() != here.back()) {
+        // A mesh numbered otherwise puts the depth a last digit apart too
+        const double extent = std::max(extentOf(settings_.box), here.back());
+        if (!key.empty() && key[0] == here[0]
+            && !sameCoordinate(key.back(), here.back(), extent)) {
             const auto [inFile, asked] = textsApart(key.back(), here.back());
             differ.push_back({"slabDepth", inFile + " m", asked + " m"});
         }

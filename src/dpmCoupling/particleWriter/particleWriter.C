@@ -10,6 +10,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "particleWriter.H"
+#include "caseChecks.H"
 #include "OSspecific.H"
 #include "IOstreams.H"
 #include "OStringStream.H"
@@ -79,7 +80,10 @@ void writeWhole
             << exit(FatalError);
     };
 
-    const int fd = ::open(partial.c_str(), O_WRONLY|O_CREAT|O_TRUNC, 0666);
+    // A fresh file, never through a link left at its name
+    ::unlink(partial.c_str());
+    const int fd =
+        ::open(partial.c_str(), O_WRONLY|O_CREAT|O_EXCL|O_NOFOLLOW, 0666);
     if (fd < 0) failed();
     const auto writeAll = [&](size_t done, const size_t end)
     {
@@ -139,6 +143,7 @@ Foam::particleWriter::particleWriter
     depth_(depth)
 {
     mkDir(dir_);
+    caseChecks::writesInsideCase(dir_, caseDir, "The particle writer");
 
     // Files from before a restart are listed up to the start time; later
     // ones belong to the run being replaced and are overwritten as it goes.

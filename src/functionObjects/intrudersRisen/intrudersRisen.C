@@ -15,6 +15,7 @@ License
 #include "cloudFunctionObject.H"
 #include "addToRunTimeSelectionTable.H"
 #include "knownEntries.H"
+#include "caseChecks.H"
 
 #include <algorithm>
 #include <cmath>
@@ -130,6 +131,10 @@ void Foam::functionObjects::intrudersRisen::sample()
     {
         if (!file_.valid())
         {
+            caseChecks::writesInsideCase
+            (
+                baseTimeDir(), time_.path(), "intrudersRisen", dict_
+            );
             file_ = createFile("intrudersRisen");
             OFstream& os = file_();
             writeHeader
