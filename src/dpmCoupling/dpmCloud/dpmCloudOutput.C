@@ -14,6 +14,9 @@ License
 
 #include "dpmCloud.H"
 
+#include <algorithm>
+#include <cmath>
+
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -42,6 +45,51 @@ void Foam::dpmCloud::writeParticles()
         engine_.dem(), exchange_.voidageP(), exchange_.gasVelocityP(),
         mesh_.time().value(), mesh_.time().timeName()
     );
+    checkImpactSpeed();
+}
+
+
+void Foam::dpmCloud::checkImpactSpeed()
+{
+    const dem::Simulation& dem = engine_.dem();
+    const dem::Settings& s = dem.settings();
+    if (impactSpeedWarned_ || s.contact.law != dem::ContactLawType::hertzMindlin)
+    {
+        return;
+    }
+    // The fastest particle: at least the speed of its next impact on a
+    // wall or on a particle at rest
+    const label n = engine_.size();
+    const double* vx = dem.vx();
+    const double* vy = dem.vy();
+    const double* vz = s.dimension == 3 ? dem.vz() : nullptr;
+    double v2 = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        v2 = std::max(v2, vx[i]*vx[i] + vy[i]*vy[i] + (vz ? vz[i]*vz[i] : 0.0));
+    }
+    const scalar v = std::sqrt(v2);
+    if (!(v > dem::hertzSpeed(s)))
+    {
+        return;
+    }
+    dem::Settings faster(s);
+    faster.contact.impactSpeed = v;
+    const scalar safe = dem::safeTimeStep(faster);
+    if (s.dt <= safe)
+    {
+        return;
+    }
+    impactSpeedWarned_ = true;
+    WarningInFunction
+        << "At t = " << mesh_.time().timeName() << " s particles move at up to "
+        << v << " m/s, faster than the impact speed " << dem::hertzSpeed(s)
+        << " m/s the HertzMindlin step bounds were taken at ('impactSpeed' of"
+        << " contact in " << dict_.name() << "): a Hertz contact that fast is"
+        << " shorter, and the DEM step 'deltaT' = " << s.dt << " s is above"
+        << " its safe bound " << safe << " s; set impactSpeed to the fastest"
+        << " impact expected (at least " << v << " m/s) and deltaT within the"
+        << " bound the log then prints" << endl;
 }
 
 
