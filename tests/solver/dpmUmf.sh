@@ -72,7 +72,7 @@ PY
 done
 
 dpmUmf -voidage '(0.4 1.2)' > log.dpmUmf.bad 2>&1 && fail "dpmUmf took voidage 1.2"
-grep -q "Option -voidage: 1.2 is not a voidage; allowed: each value in (0, 1)" log.dpmUmf.bad \
+grep -q "Option -voidage: '1.2' is outside (0, 1); allowed: one or more voidages, each in (0, 1)" log.dpmUmf.bad \
     || { cat log.dpmUmf.bad; fail "no clear error for -voidage 1.2"; }
 echo "voidage 1.2 refused: $(grep -m1 'Option -voidage' log.dpmUmf.bad)"
 pass "dpmUmf: Ergun's Umf for every class and the mixture, Wen-Yu's U0, a bad voidage refused"
