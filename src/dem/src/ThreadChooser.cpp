@@ -5,17 +5,19 @@
 #include "dem/ThreadChooser.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 namespace dem {
 
 namespace {
 
-constexpr int trialLength = 2 * ThreadChooser::trialCalls;
-
-double median(std::array<double, ThreadChooser::trialCalls> t)
+/// The mean time of a call, the slowest left out: the time a team spends over many calls,
+/// where some calls wait for a core (a median would not see them), without the one
+/// neighbour-list build or hiccup that may fall into a short trial
+double meanWithoutSlowest(std::array<double, ThreadChooser::trialCalls> t)
 {
-    std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
-    return t[t.size() / 2];
+    std::sort(t.begin(), t.end());
+    return std::accumulate(t.begin(), t.end() - 1, 0.0) / static_cast<double>(t.size() - 1);
 }
 
 } // namespace
@@ -28,7 +30,7 @@ ThreadChooser::ThreadChooser(int maxThreads)
 int ThreadChooser::next() const
 {
     if (maxThreads_ == 1) return 1;
-    if (trial_ < trialLength) return trial_ % 2 == 0 ? maxThreads_ : 1;
+    if (trial_ < trialLength) return trial_ < blockCalls ? 1 : maxThreads_;
     return chosen_;
 }
 
@@ -37,16 +39,33 @@ void ThreadChooser::record(double seconds)
     const int team = next();
     ++calls_[team == 1 ? 0 : 1];
     if (maxThreads_ == 1) return;
-    if (trial_ < trialLength) {
-        times_[team == 1 ? 0 : 1][trial_ / 2] = seconds;
-        if (++trial_ < trialLength) return;
-        const int faster = median(times_[0]) < median(times_[1]) ? 1 : maxThreads_;
-        hold_ = faster == chosen_ ? std::min(2 * hold_, maxHold) : minHold;
-        chosen_ = faster;
-        heldLeft_ = hold_;
+    if (trial_ >= trialLength) {
+        if (--heldLeft_ <= 0) trial_ = 0;
         return;
     }
-    if (--heldLeft_ <= 0) trial_ = 0;
+    const int inBlock = trial_ % blockCalls;
+    const int timed = inBlock - settleCalls;   // the timed call's number in its block
+    int decided = 0;
+    if (timed >= 0) {
+        times_[team == 1 ? 0 : 1][timed] = seconds;
+        if (team != 1) {
+            // The calls on all threads so far, their slowest left out, already took longer
+            // than one thread's whole block: they cannot win; stop paying for them
+            const auto first = times_[1].begin();
+            const double sum = std::accumulate(first, first + timed + 1, 0.0)
+                               - *std::max_element(first, first + timed + 1);
+            const double oneSum = meanWithoutSlowest(times_[0]) * (trialCalls - 1);
+            if (sum > oneSum) decided = 1;
+        }
+    }
+    if (!decided && ++trial_ < trialLength) return;
+    const int faster = decided ? decided
+                       : meanWithoutSlowest(times_[0]) < meanWithoutSlowest(times_[1]) ? 1
+                                                                                      : maxThreads_;
+    hold_ = faster == chosen_ ? std::min(2 * hold_, maxHold) : minHold;
+    chosen_ = faster;
+    heldLeft_ = hold_;
+    trial_ = trialLength;
 }
 
 } // namespace dem

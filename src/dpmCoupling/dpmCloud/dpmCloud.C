@@ -116,6 +116,18 @@ void Foam::dpmCloud::initialise(const startMode mode)
 }
 
 
+void Foam::dpmCloud::setCouplingThreads()
+{
+    // The coupling's loops run on the DEM's team of the coming step (one
+    // thread where the measured choice found one faster: a busy neighbour
+    // makes a team of two slow in every parallel loop, not only the DEM's),
+    // and in the concurrent schedule on the gas's thread too (idle then)
+    const label team = engine_.dem().nextStepThreads() + schedule_->gasThreads();
+    drag_->setThreads(team);
+    exchange_.setThreads(team);
+}
+
+
 void Foam::dpmCloud::advanceParticles()
 {
     if (frozen_)
@@ -246,11 +258,7 @@ Foam::dpmCloud::dpmCloud
         << dem::streamingLoopsInUse().c_str()
         << " (environment variable DEM_SIMD = baseline or avx2 chooses;"
         << " the same bits)" << endl;
-    // The coupling's loops run on the DEM's threads, and in the concurrent
-    // schedule on the gas's thread too (it is idle then)
-    const label couplingThreads = settings.nThreads + schedule_->gasThreads();
-    drag_->setThreads(couplingThreads);
-    exchange_.setThreads(couplingThreads);
+    setCouplingThreads();
     checkSettings(gas, mode);
 
     subSteps();         // the DEM step must divide the CFD step
@@ -330,6 +338,7 @@ void Foam::dpmCloud::interpolateGas
     }
 
     dtStep_ = mesh_.time().deltaTValue();
+    setCouplingThreads();
     exchange_.interpolateGas(U, p_rgh);
 }
 

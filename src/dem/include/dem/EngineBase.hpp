@@ -121,6 +121,12 @@ public:
     /// The threads the next loops run on: Settings::nThreads, or with measureThreads the
     /// team ThreadChooser picked for the current CFD step.
     int threads() const { return threads_; }
+    /// The team the next advance() runs on (Simulation::nextStepThreads).
+    int nextStepThreads() const
+    {
+        return settings_.measureThreads && settings_.nThreads > 1 ? threadChooser_.next()
+                                                                   : settings_.nThreads;
+    }
     /// With measureThreads: the CFD steps advanced on one thread and on nThreads so far.
     const ThreadChooser& threadChooser() const { return threadChooser_; }
     /// The diameter the search's cells are sized by (with the skin): the largest, unless the

@@ -347,6 +347,11 @@ public:
     /// nThreads.
     std::int64_t stepsOnOneThread() const;
     std::int64_t stepsOnAllThreads() const;
+    /// The team the next CFD step (advance) runs its loops on: nThreads, or with
+    /// measureThreads the one ThreadChooser picks for it. A caller's own loops around the
+    /// step (the coupling's) follow it, so that a neighbour's load that makes one thread
+    /// faster makes it so for them too.
+    int nextStepThreads() const;
     /// Heap memory held by particle, contact and search arrays, bytes.
     std::size_t memoryBytes() const;
 

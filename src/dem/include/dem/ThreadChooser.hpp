@@ -14,11 +14,22 @@ namespace dem {
 
 class ThreadChooser {
 public:
-    /// Trials alternate the two candidates, trialCalls calls of each (all threads first);
-    /// the one with the smaller median runs for a hold of calls, then the next trial. The
-    /// hold starts at minHold and doubles up to maxHold while the trials keep the choice,
-    /// so that a settled choice costs few trials and a change of the load is seen again.
-    static constexpr int trialCalls = 5;
+    /// A trial runs a block of calls on one thread, then a block on all; in each block the
+    /// first settleCalls are not timed (the other team's threads are still being put to
+    /// sleep or woken) and the next trialCalls are. The team of the smaller mean time, the
+    /// slowest call of each left out, runs for a hold of calls, then the next trial; the
+    /// block on all threads stops as soon as its calls have taken longer than one thread's
+    /// block. The hold starts at minHold and doubles up to maxHold while the trials keep
+    /// the choice, so that a settled choice costs few trials and a change of the load is
+    /// seen again.
+    /// Why the mean: beside a busy core, most calls on two threads are faster than one
+    /// thread's, but every few waits a scheduler's time slice for the core its partner
+    /// shares (5-100 times as long): a median sees the fast calls and chose two threads at a
+    /// third of one thread's speed; the time spent is the mean's.
+    static constexpr int trialCalls = 21;
+    static constexpr int settleCalls = 2;
+    static constexpr int blockCalls = settleCalls + trialCalls;
+    static constexpr int trialLength = 2 * blockCalls;
     static constexpr std::int64_t minHold = 50;
     static constexpr std::int64_t maxHold = 3200;
 
@@ -36,7 +47,7 @@ public:
 
 private:
     int maxThreads_;
-    int trial_ = 0;                       // calls made in the current trial; 2 trialCalls: none
+    int trial_ = 0;                       // calls made in the current trial; trialLength: none
     std::array<std::array<double, trialCalls>, 2> times_{};   // [one, all][call]
     int chosen_;                          // the team size held
     std::int64_t hold_ = minHold, heldLeft_ = 0;
