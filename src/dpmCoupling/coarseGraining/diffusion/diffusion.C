@@ -202,6 +202,7 @@ Foam::coarseGrainings::diffusion::diffusion
 Foam::string Foam::coarseGrainings::diffusion::description() const
 {
     OStringStream os;
+    os.precision(6);
     os  << "coarse graining diffusion: the particle fraction, the mixture"
         << " and the reaction diffused over the bandwidth " << bandwidth_
         << " m (pseudo time b^2/4, no flux through the boundaries), in "
