@@ -23,9 +23,10 @@
 #     formula (Beetstra et al. 2007, van der Hoef et al. 2005). The budget:
 #     the intruder's own volume, spread by the kernel, is in the Sauter
 #     mean diameter it sees (y 2.96-3.00 instead of 3.04: -2 to -3 % in
-#     f_i); the glass left out around it is 2-10 % more than its own
-#     volume (the voidage it sees up by about 0.001: -0.5 %); the gas it
-#     sees is disturbed by its own reaction (about 1 %);
+#     f_i); the glass left out around it (28-32 spheres) is 0-14 % more
+#     than its own volume (the voidage it sees up by about 0.001: -0.5 %);
+#     the gas runs a little faster through its region, whose drag is less
+#     than the glass's it displaced (the gas it sees 1-4 % above U0/eps);
 #   - momentum conserved: the reaction the gas cells carry equals the
 #     force on the particles to 1e-12 relative (the smoothing keeps sums);
 #   - the smoothed particle fraction 1 - voidage is the default run's
