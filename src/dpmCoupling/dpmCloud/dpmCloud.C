@@ -210,7 +210,9 @@ Foam::dpmCloud::dpmCloud
     Info<< "Coupling: " << formulation_->description().c_str()
         << nl << "Coupling: " << schedule_->description().c_str()
         << nl << "Coupling: "
-        << particleModel_.voidage().description().c_str() << endl;
+        << particleModel_.voidage().description().c_str()
+        << nl << "Coupling: "
+        << particleModel_.smoothing().description().c_str() << endl;
 
     if (classNames_.size() < 1)
     {

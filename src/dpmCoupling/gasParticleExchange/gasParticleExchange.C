@@ -288,6 +288,14 @@ void Foam::gasParticleExchange::exchangeToGas()
             Fp[c] += f*F;
         }
     }
+    // Smoothed as the voidage the particles saw; the sums, hence the
+    // momentum handed over, are kept
+    const coarseGraining& smoothing = particleModel_.smoothing();
+    if (smoothing.active())
+    {
+        smoothing.smooth(Kc);
+        smoothing.smooth(Fp);
+    }
     Kc_.correctBoundaryConditions();
     Fp_.correctBoundaryConditions();
     // The boundary values too: the pressure equation takes the explicit
@@ -321,6 +329,19 @@ void Foam::gasParticleExchange::updateVoidage()
         engine_.size(), dem.diameter(),
         voidage_.primitiveFieldRef(), particleFraction_.primitiveFieldRef()
     );
+    const coarseGraining& smoothing = particleModel_.smoothing();
+    if (smoothing.active())
+    {
+        // The voidage of the smoothed fraction, bounded as the voidage
+        // model bounds it (the smoothing needs a voidage 1 - phiP)
+        scalarField& phiP = particleFraction_.primitiveFieldRef();
+        smoothing.smooth(phiP);
+        scalarField& eps = voidage_.primitiveFieldRef();
+        forAll(eps, c)
+        {
+            eps[c] = max(1 - phiP[c], voidageMin_);
+        }
+    }
     particleFraction_.correctBoundaryConditions();
     voidage_.correctBoundaryConditions();
 

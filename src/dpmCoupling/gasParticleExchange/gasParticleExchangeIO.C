@@ -60,6 +60,29 @@ void Foam::gasParticleExchange::reportBalance(Ostream& os) const
 
     os  << "Exchange: force on particles " << particleForce
         << " N, reaction mapped to the gas " << gasForce << " N" << nl;
+    const vector excess = gasForce - particleForce;
+    os  << "Exchange: reaction less the force on the particles " << excess
+        << " N, relative " << mag(excess)/max(mag(particleForce), VSMALL)
+        << nl;
+
+    // A fixed bed: the fluid force on each class of the held particles
+    // (with one particle in a class, that particle's)
+    if (frozen_ && frozenForce_.size() == engine_.size())
+    {
+        const dem::Simulation& dem = engine_.dem();
+        const auto& classes = dem.settings().classes;
+        const int* cls = dem.classIndex();
+        List<vector> byClass(label(classes.size()), Zero);
+        forAll(frozenForce_, i)
+        {
+            byClass[cls[i]] += frozenForce_[i];
+        }
+        forAll(byClass, k)
+        {
+            os  << "Exchange: fluid force on the held class "
+                << classes[k].name.c_str() << " " << byClass[k] << " N" << nl;
+        }
+    }
     particleModel_.voidage().reportBalance
     (
         os, engine_.size(), engine_.dem().diameter(),

@@ -49,6 +49,17 @@ void Foam::gasParticleExchange::updateMixture()
             classFraction_, fractionByDiameter_
         );
     }
+
+    // Smoothed as phiP is, so that the classes still add up to it
+    const coarseGraining& smoothing = particleModel_.smoothing();
+    if (smoothing.active())
+    {
+        forAll(classFraction_, k)
+        {
+            smoothing.smooth(classFraction_[k]);
+        }
+        smoothing.smooth(fractionByDiameter_);
+    }
 }
 
 

@@ -44,8 +44,20 @@ Foam::particleModel::particleModel
 )
 :
     voidage_(voidageModel::New(dict, grid, voidageMin)),
-    engine_(engineOf(*voidage_))
-{}
+    engine_(engineOf(*voidage_)),
+    smoothing_(coarseGraining::New(dict, grid))
+{
+    // The smoothed voidage is 1 - the smoothed volume fraction, which
+    // Hoomans' 2D-3D map of discs2D is not
+    if (smoothing_->active() && !slab())
+    {
+        FatalIOErrorInFunction(dict)
+            << "coarseGraining " << smoothing_->type() << " in "
+            << dict.name() << " needs voidageModel slab3D or spheres3D (the"
+            << " voidage 1 - the particles' volume fraction); the voidage"
+            << " model is " << voidage_->type() << exit(FatalIOError);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -23,7 +23,13 @@ Description
       Test-sphereBoxOverlap), the shares against the whole;
     - voidageModel spheres3D: the mapped volume against the particles',
       a lattice of known solid fraction pi/6, the spreading sphere's
-      shares, the same fields on 1 and 2 threads.
+      shares, the same fields on 1 and 2 threads;
+    - coarseGraining diffusion: a cell's unit amount diffused over the
+      pseudo time T = b^2/4 keeps its sum and its sign, and spreads along
+      the column with the variance 2T = b^2/2 of the finite-volume
+      diffusion (exact on an unbounded grid: d<y^2>/dt = 2 for the
+      three-point Laplacian; with b one cell the kernel's tail is below
+      1e-15 at the column's ends); a uniform field stays uniform.
     Ends with the line "N passed, M failed".
 
 \*---------------------------------------------------------------------------*/
@@ -32,6 +38,7 @@ Description
 #include "cartesianGrid.H"
 #include "forEachSphereBoxOverlap.H"
 #include "voidageModel.H"
+#include "coarseGraining.H"
 #include "Random.H"
 #include "IStringStream.H"
 #include "unitChecks.H"
@@ -274,6 +281,52 @@ void checkSpheres3D(const fvMesh& mesh, const cartesianGrid& grid)
 }
 
 
+void checkDiffusion(const fvMesh& mesh, const cartesianGrid& grid)
+{
+    const scalar b = 0.009525;
+    autoPtr<coarseGraining> smoothing
+    (
+        coarseGraining::New
+        (
+            dictionary
+            (
+                IStringStream
+                (
+                    "coarseGraining diffusion; diffusionCoeffs { bandwidth 0.009525; }"
+                )()
+            ),
+            grid
+        )
+    );
+    check("diffusion selected", smoothing->type() == "diffusion", 1, 0);
+
+    // A unit amount in a cell of the column's middle, 12 cells from the
+    // ends: along y it spreads as on an unbounded grid
+    const label c = grid.cellIJK(1, 12, 2);
+    scalarField f(mesh.nCells(), 0);
+    f[c] = 1;
+    smoothing->smooth(f);
+    scalar variance = 0;
+    forAll(f, i)
+    {
+        variance += f[i]*sqr(mesh.C()[i].y() - mesh.C()[c].y());
+    }
+    check("diffusion: the sum kept", sum(f), 1, 1e-14);
+    check("diffusion: no negative value", min(f) >= 0, 1, 0);
+    check("diffusion: the variance along y = b^2/2", variance/(0.5*b*b), 1, 1e-12);
+    check("diffusion: the cell keeps less than a third", f[c] < 1.0/3, 1, 0);
+
+    scalarField uniform(mesh.nCells(), 0.4);
+    smoothing->smooth(uniform);
+    check("diffusion: a uniform field stays", 1 + max(mag(uniform - 0.4)), 1, 1e-15);
+
+    vectorField v(mesh.nCells(), Zero);
+    v[c] = vector(1, -2, 3);
+    smoothing->smooth(v);
+    check("diffusion: a vector field by components", 1 + max(mag(v.component(2) - 3*f)), 1, 1e-15);
+}
+
+
 int main(int argc, char *argv[])
 {
     argList::noParallel();
@@ -286,6 +339,7 @@ int main(int argc, char *argv[])
     checkInterpolation(mesh, grid);
     checkSphereShares(mesh, grid);
     checkSpheres3D(mesh, grid);
+    checkDiffusion(mesh, grid);
 
     reportChecks();
     return 0;
