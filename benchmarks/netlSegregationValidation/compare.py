@@ -68,6 +68,7 @@ import numpy as np
 
 try:
     from dpmfoam2d import statistics
+    from dpmfoam2d.files import figure_path_problem
     from dpmfoam2d.tables import read_dat
 except ModuleNotFoundError as e:
     if not (e.name or "").startswith("dpmfoam2d"):
@@ -312,17 +313,9 @@ def arguments(argv):
     if uncertainty is None:
         uncertainty = os.path.join(run, "uncertainty")
     if figure is not None:
-        folder = os.path.dirname(figure) or "."
-        if not os.path.isdir(folder):
-            refuse("-figure %s: no folder %s" % (figure, folder))
-        if os.path.isdir(figure) and not os.path.islink(figure):
-            refuse("-figure %s is a folder; give a file name (.png)" % figure)
-        import matplotlib
-        matplotlib.use("Agg")
-        from matplotlib.figure import Figure
-        formats = Figure().canvas.get_supported_filetypes()
-        if os.path.splitext(figure)[1].lstrip(".").lower() not in formats:
-            refuse("-figure %s: a file name ending in .%s" % (figure, ", .".join(sorted(formats))))
+        problem = figure_path_problem(figure)
+        if problem:
+            refuse("-figure %s%s" % (figure, problem))
     return run, reference, uncertainty, figure, per_seed
 
 

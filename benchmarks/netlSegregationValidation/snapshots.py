@@ -18,7 +18,7 @@ import numpy as np
 
 from dpmfoam2d import particles as pio
 from dpmfoam2d import rise_time
-from dpmfoam2d.files import save_figure
+from dpmfoam2d.files import figure_path_problem, save_figure
 
 
 def refuse(text):
@@ -99,15 +99,9 @@ def main(argv=None):
 
 def check_output(out):
     """-o: a file name of a format matplotlib writes, in a folder that exists."""
-    folder = os.path.dirname(out) or "."
-    if not os.path.isdir(folder):
-        refuse("-o %s: no folder %s" % (out, folder))
-    if os.path.isdir(out) and not os.path.islink(out):
-        refuse("-o %s is a folder; give a file name (.png)" % out)
-    from matplotlib.figure import Figure
-    formats = Figure().canvas.get_supported_filetypes()
-    if os.path.splitext(out)[1].lstrip(".").lower() not in formats:
-        refuse("-o %s: a file name ending in .%s" % (out, ", .".join(sorted(formats))))
+    problem = figure_path_problem(out)
+    if problem:
+        refuse("-o %s%s" % (out, problem))
 
 
 if __name__ == "__main__":

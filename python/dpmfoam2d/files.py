@@ -51,6 +51,25 @@ def save_figure(fig, path, **options):
         fig.savefig(f, format=os.path.splitext(path)[1].lstrip(".") or "png", **options)
 
 
+def figure_path_problem(path):
+    """What keeps a figure from being written at path, as the rest of a
+    sentence that starts with the path (': no folder x', ' is a folder; ...',
+    ': a file name ending in ...'), or None: the folder must exist and the
+    name end in a format matplotlib writes."""
+    folder = os.path.dirname(path) or "."
+    if not os.path.isdir(folder):
+        return ": no folder %s" % folder
+    if os.path.isdir(path) and not os.path.islink(path):
+        return " is a folder; give a file name (.png)"
+    import matplotlib
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+    formats = Figure().canvas.get_supported_filetypes()
+    if os.path.splitext(path)[1].lstrip(".").lower() not in formats:
+        return ": a file name ending in .%s" % ", .".join(sorted(formats))
+    return None
+
+
 def own_directory(path):
     """path made if missing, as a tool makes its output directory; a
     symbolic link there is refused (NotADirectoryError naming it): what is

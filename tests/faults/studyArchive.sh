@@ -26,6 +26,7 @@
 #   7. an import refused for another dictionary names the differing entry,
 #      not the file's banner.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
+. "$testsDir/faults/summaryFunctions"
 cd "$workDir" || fail "cd"
 umask 022
 python=/usr/bin/python3
@@ -33,24 +34,8 @@ case1=w0.50_1bar_seed1
 noTraceback() { ! grep -q "Traceback" "$1" || { cat "$1"; fail "$2: a traceback"; }; }
 
 # The study src: one summary case made by hand
-template="$DPMFOAM2D_PROJECT/tutorials/paperStudy"
-mkdir -p src/$case1/postProcessing/laceyIndex/0 src/$case1/postProcessing/bedStatistics/0
-cp "$template/studyDict" src/
-cp -r "$template/constant" "$template/system" src/$case1/
-sed -i -e 's/^endTime .*/endTime 0.05;/' -e 's/^particleScale .*/particleScale 0.05;/' \
-    src/$case1/constant/caseSettings
-printf '# A finished case kept as its summary\ntime 0.05\nfrom a test\n' \
-    > src/$case1/constant/archivedCase
-printf 'dpmFoam2D\nUmf (Wen-Yu) 0.3 m/s, U0/Umf 1.25, U0 0.375 m/s\nStarting time loop\n' \
-    > src/$case1/log.dpmFoam2D
-printf '# Time M\n0.01 0.5\n0.02 0.6\n0.03 0.7\n0.04 0.75\n0.05 0.8\n' \
-    > src/$case1/postProcessing/laceyIndex/0/laceyIndex.dat
-printf '# Time vertical horizontal hSmall hLarge rSmall rLarge\n' \
-    > src/$case1/postProcessing/laceyIndex/0/segregation.dat
-for t in 0.01 0.02 0.03 0.04 0.05
-do
-    echo "$t 0.1 0.2 0.03 0.04 0.01 0.02" >> src/$case1/postProcessing/laceyIndex/0/segregation.dat
-done
+summaryCaseDictionaries src $case1 && markSummaryCase src/$case1 || fail "the summary case"
+mkdir -p src/$case1/postProcessing/bedStatistics/0
 printf '# Time bedHeight\n0.05 0.1\n' > src/$case1/postProcessing/bedStatistics/0/bed.dat
 
 dpmStudy src -export base.tar.gz > log.base 2>&1 || { cat log.base; fail "-export of src"; }

@@ -11,30 +11,15 @@
 #   3. an import that finds the same case here, unfinished, keeps the local
 #      one and says so: the local case is used, not the finished import.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
+. "$testsDir/faults/summaryFunctions"
 cd "$workDir" || fail "cd"
 case1=w0.50_1bar_seed1
 noTraceback() { ! grep -q "Traceback" "$1" || { cat "$1"; fail "$2: a traceback"; }; }
 
 # The study src: one summary case made by hand (the template's dictionaries)
-template="$DPMFOAM2D_PROJECT/tutorials/paperStudy"
-mkdir -p src/$case1/postProcessing/laceyIndex/0
-cp "$template/studyDict" src/
-cp -r "$template/constant" "$template/system" src/$case1/
-sed -i -e 's/^endTime .*/endTime 0.05;/' -e 's/^particleScale .*/particleScale 0.05;/' \
-    src/$case1/constant/caseSettings
+summaryCaseDictionaries src $case1 || fail "the summary case's dictionaries"
 cp -r src/$case1 local          # the same case, not run yet (for 3.)
-printf '# A finished case kept as its summary\ntime 0.05\nfrom a test\n' \
-    > src/$case1/constant/archivedCase
-printf 'dpmFoam2D\nUmf (Wen-Yu) 0.3 m/s, U0/Umf 1.25, U0 0.375 m/s\nStarting time loop\n' \
-    > src/$case1/log.dpmFoam2D
-printf '# Time M\n0.01 0.5\n0.02 0.6\n0.03 0.7\n0.04 0.75\n0.05 0.8\n' \
-    > src/$case1/postProcessing/laceyIndex/0/laceyIndex.dat
-printf '# Time vertical horizontal hSmall hLarge rSmall rLarge\n' \
-    > src/$case1/postProcessing/laceyIndex/0/segregation.dat
-for t in 0.01 0.02 0.03 0.04 0.05
-do
-    echo "$t 0.1 0.2 0.03 0.04 0.01 0.02" >> src/$case1/postProcessing/laceyIndex/0/segregation.dat
-done
+markSummaryCase src/$case1 || fail "the summary case"
 dpmStudy src -export base.tar.gz > log.export 2>&1 || { cat log.export; fail "-export of src"; }
 dpmStudy S -import base.tar.gz -noPictures > log.import 2>&1 || { cat log.import; fail "-import into S"; }
 [ -f S/$case1/constant/archivedCase ] || fail "no summary case imported into S"
@@ -58,7 +43,7 @@ grep -q "finished (t = 0.1 s)" log.longer && { cat log.longer; fail "the summary
 echo "ok   $(grep -m1 "imported summary" log.longer)"
 
 echo "3. an import of a case that is here, unfinished"
-mkdir -p L && cp "$template/studyDict" L/ && cp -r local L/$case1
+mkdir -p L && cp "$DPMFOAM2D_PROJECT/tutorials/paperStudy/studyDict" L/ && cp -r local L/$case1
 dpmStudy L -import base.tar.gz -noPictures > log.importLocal 2>&1 || { cat log.importLocal; fail "-import into L"; }
 noTraceback log.importLocal "-import onto an unfinished local case"
 cat log.importLocal | grep "^import"
