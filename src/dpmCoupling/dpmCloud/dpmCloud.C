@@ -174,7 +174,7 @@ Foam::dpmCloud::dpmCloud
             IOobject::NO_WRITE
         )
     ),
-    grid_(mesh),
+    grid_(gasGrid::New(dict_, mesh)),
     g_(g),
     classNames_(dict_.subDict("classes").toc()),
     drag_(dragModel::New(dict_, gas.rho(), gas.mu())),
@@ -194,13 +194,13 @@ Foam::dpmCloud::dpmCloud
     ),
     writeInterval_(positiveEntry(dict_, "writeInterval", 0.01)),
     voidageMin_(boundedEntryOrDefault(dict_, "voidageMin", 0.1, 0, 1, true)),
-    particleModel_(dict_, grid_, voidageMin_),
+    particleModel_(dict_, *grid_, voidageMin_),
     slab_(particleModel_.slab()),
-    engine_(dict_, grid_, classNames_),
-    bed_(dict_, grid_, classNames_, engine_, slab_, mesh.time().path()),
+    engine_(dict_, *grid_, classNames_),
+    bed_(dict_, *grid_, classNames_, engine_, slab_, mesh.time().path()),
     exchange_
     (
-        mesh, grid_, engine_, *drag_, *formulation_, particleModel_,
+        mesh, *grid_, engine_, *drag_, *formulation_, particleModel_,
         gas.rho(), g_, frozen_, voidageMin_, gas.inletPatch(),
         mode == startMode::run, keepsExchange(mode)
     ),
@@ -237,7 +237,7 @@ Foam::dpmCloud::dpmCloud
     const particleChecks checks(dict_, classNames_);
     checks.entries(mesh_.time());
     caseChecks::gravity(g_);
-    caseChecks::bedGeometry(mesh_, grid_);
+    grid_->checkBedGeometry();
 
     const dem::Settings settings = engine_.settings(g_, particleModel_);
     engine_.setRunRecord
@@ -264,11 +264,14 @@ Foam::dpmCloud::dpmCloud
     checkSettings(gas, mode);
 
     subSteps();         // the DEM step must divide the CFD step
-    formulation_->checkBedDepth
-    (
-        dict_, grid_, particleEngine::largestDiametersOf(settings), slab_,
-        voidageMin_
-    );
+    {
+        const scalar dMax = max(particleEngine::largestDiametersOf(settings));
+        formulation_->checkBedDepth
+        (
+            dict_, grid_->depth(), dMax,
+            particleModel_.voidage().densestFraction(dMax), voidageMin_
+        );
+    }
     if (mode == startMode::run)
     {
         faultInjection::install(mesh);      // before a bed is packed and saved
@@ -279,7 +282,7 @@ Foam::dpmCloud::dpmCloud
     (
         new particleWriter
         (
-            mesh.time().path(), grid_.depth(), mesh.time().value()
+            mesh.time().path(), grid_->depth(), mesh.time().value()
         )
     );
 

@@ -101,23 +101,22 @@ void Foam::dpmCloud::writeStartParticles(const volVectorField& U)
         return;
     }
 
-    // The coupling's interpolation (cartesianGrid::interpolate), into
-    // arrays of the file's own: the coupling's are left as the first step
-    // makes them
+    // The coupling's interpolation (the grid's stencils), into arrays of
+    // the file's own: the coupling's are left as the first step makes them
     const label n = size();
     const scalarField& eps = exchange_.voidage().primitiveField();
     const vectorField& Uc = U.primitiveField();
-    const double* x = engine_.dem().x();
-    const double* y = engine_.dem().y();
-    const double* z = grid_.resolvedInDepth() ? engine_.dem().z() : nullptr;
+    cellWeights stencils;
+    grid_->interpolationStencils
+    (
+        n, engine_.dem().x(), engine_.dem().y(), engine_.z(), 1, stencils
+    );
     scalarField voidageP(n);
     vectorField gasVelocityP(n);
     for (label i = 0; i < n; ++i)
     {
-        grid_.interpolate
-        (
-            x[i], y[i], z ? z[i] : 0, eps, Uc, voidageP[i], gasVelocityP[i]
-        );
+        voidageP[i] = stencils.interpolate(i, eps);
+        gasVelocityP[i] = stencils.interpolate(i, Uc);
     }
     writer_->write(engine_.dem(), voidageP, gasVelocityP, time.value(), time.timeName());
 }
@@ -205,30 +204,9 @@ void Foam::dpmCloud::report(Ostream& os) const
     os  << "    total mass " << engine_.totalMass() << " kg" << nl
         << "    drag model " << drag_->type()
         << (exchange_.mixtureNeeded() ? " (with the mixture of each cell)" : "")
-        << nl
-        << "    bed depth (mesh thickness) " << grid_.depth()*1e3 << " mm, gas cells "
-        << grid_.dx()*1e3 << " x " << grid_.dy()*1e3;
-    if (grid_.resolvedInDepth())
-    {
-        os  << " x " << grid_.dz()*1e3 << " mm (" << grid_.nx() << " x "
-            << grid_.ny() << " x " << grid_.nz() << ")" << nl;
-    }
-    else
-    {
-        os  << " mm (" << grid_.nx() << " x " << grid_.ny() << ")" << nl;
-    }
-    if (slab_ && grid_.resolvedInDepth())
-    {
-        os  << "    3D spheres between walls z = 0 and z = " << grid_.depth()
-            << " m in a gas resolved in depth (" << grid_.nz() << " cells)"
-            << endl;
-    }
-    else if (slab_)
-    {
-        os  << "    slab mode: 3D spheres between walls z = 0 and z = "
-            << grid_.depth() << " m (the mesh's thickness); gas velocity z = 0"
-            << endl;
-    }
+        << nl;
+    grid_->report(os);
+    particleModel_.voidage().report(os);
     os
         << "    time steps: CFD " << mesh_.time().deltaTValue() << " s, DEM "
         << s.dt << " s (" << subSteps() << " sub-steps); safe bound "

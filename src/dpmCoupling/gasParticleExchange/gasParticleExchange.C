@@ -65,7 +65,7 @@ IOobject fieldIO(const word& name, const fvMesh& mesh, const bool write)
 Foam::gasParticleExchange::gasParticleExchange
 (
     const fvMesh& mesh,
-    const cartesianGrid& grid,
+    const gasGrid& grid,
     particleEngine& engine,
     const dragModel& drag,
     const couplingFormulation& formulation,
@@ -88,8 +88,6 @@ Foam::gasParticleExchange::gasParticleExchange
     rhoGas_(rhoGas),
     g_(g),
     frozen_(frozen),
-    slab_(model.slab()),
-    gasInDepth_(grid.resolvedInDepth()),
     voidageMin_(voidageMin),
     nThreads_(1),
     reactionReady_(false),
@@ -153,9 +151,6 @@ void Foam::gasParticleExchange::interpolateGas
     const scalarField& eps = voidage_.primitiveField();
     const vectorField& Uc = U.primitiveField();
 
-    const double* x = dem.x();
-    const double* y = dem.y();
-    const double* z = gasInDepth_ ? dem.z() : nullptr;
     const double* vx = dem.vx();
     const double* vy = dem.vy();
     const double* d = dem.diameter();
@@ -168,14 +163,17 @@ void Foam::gasParticleExchange::interpolateGas
     double* uY = dem.gasVelocityY();
     double* fX = dem.extraForceX();
     double* fY = dem.extraForceY();
+    grid_.interpolationStencils
+    (
+        n, dem.x(), dem.y(), engine_.z(), nThreads, stencils_
+    );
     // One pass for all the per-particle inputs: gas, slip, and the
     // buoyancy of the hydrostatic gas pressure
     #pragma omp parallel for num_threads(nThreads) schedule(static)
     for (label i = 0; i < n; ++i)
     {
-        scalar e;
-        vector u;
-        grid_.interpolate(x[i], y[i], z ? z[i] : 0, eps, Uc, e, u);
+        const scalar e = stencils_.interpolate(i, eps);
+        const vector u = stencils_.interpolate(i, Uc);
         voidageP_[i] = e;
         gasVelocityP_[i] = u;
         diameterP_[i] = d[i];
@@ -189,9 +187,9 @@ void Foam::gasParticleExchange::interpolateGas
         fY[i] = -rhoGas_*Vp*g_.y();
     }
 
-    if (slab_)
+    if (engine_.movesInDepth())
     {
-        slabGasInputs(slipP_);
+        depthGasInputs(slipP_);
     }
     if (mixtureNeeded_)
     {
@@ -209,13 +207,14 @@ void Foam::gasParticleExchange::interpolateGas
     }
     formulation_.addPressureForce
     (
-        dem, K_, grid_, p_rgh, particleFraction_, voidageMin_, nThreads
+        dem, K_, stencils_, p_rgh, particleFraction_, voidageMin_,
+        grid_.resolvedInDepth(), nThreads
     );
     gasVelocitySeen_ = Uc;
 }
 
 
-void Foam::gasParticleExchange::slabGasInputs(scalarField& slip)
+void Foam::gasParticleExchange::depthGasInputs(scalarField& slip)
 {
     dem::Simulation& dem = engine_.dem();
     const label n = engine_.size();
@@ -226,13 +225,14 @@ void Foam::gasParticleExchange::slabGasInputs(scalarField& slip)
     double* uZ = dem.gasVelocityZ();
     double* fZ = dem.extraForceZ();
     const scalar pi = constant::mathematical::pi;
+    const bool gasZ = grid_.resolvedInDepth();
     for (label i = 0; i < n; ++i)
     {
-        // A slab's gas has no z velocity; a gas resolved in depth has
+        // A gas one cell thick has no z velocity; a gas resolved in depth has
         const vector& u = gasVelocityP_[i];
-        const scalar uz = gasInDepth_ ? u.z() : 0;
+        const scalar uz = gasZ ? u.z() : 0;
         uZ[i] = uz;
-        fZ[i] = gasInDepth_ ? -rhoGas_*pi*d[i]*d[i]*d[i]/6*g_.z() : 0;
+        fZ[i] = gasZ ? -rhoGas_*pi*d[i]*d[i]*d[i]/6*g_.z() : 0;
         if (frozen_) continue;      // slip of particles at rest, as set
         const scalar sx = u.x() - vx[i];
         const scalar sy = u.y() - vy[i];
@@ -246,6 +246,7 @@ void Foam::gasParticleExchange::holdFrozen()
 {
     dem::Simulation& dem = engine_.dem();
     const label n = engine_.size();
+    const bool gasZ = grid_.resolvedInDepth();
     frozenForce_.setSize(n);
     for (label i = 0; i < n; ++i)
     {
@@ -253,7 +254,7 @@ void Foam::gasParticleExchange::holdFrozen()
         (
             K_[i]*dem.gasVelocityX()[i] + dem.extraForceX()[i],
             K_[i]*dem.gasVelocityY()[i] + dem.extraForceY()[i],
-            gasInDepth_
+            gasZ
           ? K_[i]*dem.gasVelocityZ()[i] + dem.extraForceZ()[i]
           : 0
         );
@@ -266,7 +267,7 @@ void Foam::gasParticleExchange::exchangeToGas()
     // The reaction on the gas, shared by the cells as the particle was at
     // the start of the step, where the gas was interpolated
     const label n = engine_.size();
-    const scalar Vc = grid_.cellVolume();
+    const scalarField& Vc = grid_.cellVolumes();
     scalarField& Kc = Kc_.primitiveFieldRef();
     vectorField& Fp = Fp_.primitiveFieldRef();
     Kc = 0;
@@ -283,7 +284,7 @@ void Foam::gasParticleExchange::exchangeToGas()
         for (label k = S*i; k < S*i + counts[i]; ++k)
         {
             const label c = cells[k];
-            const scalar f = fractions[k]/Vc;
+            const scalar f = fractions[k]/Vc[c];
             Kc[c] += f*K_[i];
             Fp[c] += f*F;
         }
@@ -313,8 +314,7 @@ void Foam::gasParticleExchange::updateOverlaps()
     const dem::Simulation& dem = engine_.dem();
     particleModel_.voidage().updateOverlaps
     (
-        engine_.size(), dem.x(), dem.y(),
-        particleModel_.slab() ? dem.z() : nullptr, dem.diameter(),
+        engine_.size(), dem.x(), dem.y(), engine_.z(), dem.diameter(),
         nThreads_
     );
 }
@@ -356,7 +356,7 @@ void Foam::gasParticleExchange::exchangedForces(vectorField& F) const
 {
     formulation_.exchangedForces
     (
-        engine_.dem(), K_, frozen_, frozenForce_, gasInDepth_, F
+        engine_.dem(), K_, frozen_, frozenForce_, grid_.resolvedInDepth(), F
     );
 }
 

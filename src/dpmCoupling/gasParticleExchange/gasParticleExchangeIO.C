@@ -56,7 +56,7 @@ void Foam::gasParticleExchange::reportBalance(Ostream& os) const
         exchangedForces(F);
         for (const vector& Fi : F) particleForce += Fi;
     }
-    const vector gasForce = gSum(Fp_.primitiveField())*grid_.cellVolume();
+    const vector gasForce = gSum(Fp_.primitiveField()*grid_.cellVolumes());
 
     os  << "Exchange: force on particles " << particleForce
         << " N, reaction mapped to the gas " << gasForce << " N" << nl;

@@ -23,7 +23,7 @@ void Foam::gasParticleExchange::updateMixture()
     const dem::Simulation& dem = engine_.dem();
     const label n = engine_.size();
     const label nCells = mesh_.nCells();
-    const scalar Vc = grid_.cellVolume();
+    const scalarField& Vc = grid_.cellVolumes();
     const double* d = dem.diameter();
     const int* cls = dem.classIndex();
 
@@ -65,26 +65,21 @@ void Foam::gasParticleExchange::updateMixture()
 
 void Foam::gasParticleExchange::interpolateMixture()
 {
-    const dem::Simulation& dem = engine_.dem();
+    // The stencils the gas was interpolated with (interpolateGas)
     const label n = engine_.size();
-    const double* x = dem.x();
-    const double* y = dem.y();
-    const double* z = gasInDepth_ ? dem.z() : nullptr;
-    const double* d = dem.diameter();
+    const double* d = engine_.dem().diameter();
     const scalarField& phiP = particleFraction_.primitiveField();
+    const label S = stencils_.stride;
 
     scalarField& dMean = mixtureP_.sauterDiameter;
     dMean.setSize(n);
     #pragma omp parallel for num_threads(nThreads_) schedule(static)
     for (label i = 0; i < n; ++i)
     {
-        label cells[8];
-        scalar w[8];
-        const label count =
-            grid_.interpolationStencil(x[i], y[i], z ? z[i] : 0, cells, w);
         dMean[i] = solidsMixture::sauterDiameter
         (
-            count, cells, w, phiP, fractionByDiameter_, d[i]
+            stencils_.counts[i], &stencils_.cells[S*i],
+            &stencils_.weights[S*i], phiP, fractionByDiameter_, d[i]
         );
     }
 }

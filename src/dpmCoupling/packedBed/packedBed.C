@@ -38,7 +38,7 @@ const char* const bedEntries =
 Foam::packedBed::packedBed
 (
     const IOdictionary& dict,
-    const cartesianGrid& grid,
+    const gasGrid& grid,
     const wordList& classNames,
     particleEngine& engine,
     const bool slab,

@@ -20,7 +20,7 @@ License
 Foam::particleEngine::particleEngine
 (
     const IOdictionary& dict,
-    const cartesianGrid& grid,
+    const gasGrid& grid,
     const wordList& classNames
 )
 :
@@ -50,15 +50,9 @@ dem::Settings Foam::particleEngine::settings
             FatalIOErrorInFunction(c)
                 << "Entry 'diameter' = " << dem::largestDiameter(s.classes.back())
                 << " of class " << name << " in " << dict_.name()
-                << " is larger than the gas cell (" << grid_.dx() << " x "
-                << grid_.dy();
-            if (grid_.resolvedInDepth())
-            {
-                FatalIOError<< " x " << grid_.dz();
-            }
-            FatalIOError
-                << " m); allowed range (0, " << grid_.minCellSize() << "]"
-                << exit(FatalIOError);
+                << " is larger than the gas cell ("
+                << grid_.cellSize().c_str() << " m); allowed range (0, "
+                << grid_.minCellSize() << "]" << exit(FatalIOError);
         }
     }
 

@@ -10,46 +10,23 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "particleModel.H"
-#include "discs2D.H"
-#include "slab3D.H"
-
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::particleModel::engine Foam::particleModel::engineOf
-(
-    const voidageModel& model
-)
-{
-    if (isA<voidageModels::slab3D>(model))
-    {
-        return engine::slabSpheres;
-    }
-    if (!isA<voidageModels::discs2D>(model))
-    {
-        FatalErrorInFunction
-            << "The voidage model " << model.type() << " names no DEM engine"
-            << " (particleModel::engineOf)" << abort(FatalError);
-    }
-    return engine::discs2D;
-}
-
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::particleModel::particleModel
 (
     const dictionary& dict,
-    const cartesianGrid& grid,
+    const gasGrid& grid,
     const scalar voidageMin
 )
 :
     voidage_(voidageModel::New(dict, grid, voidageMin)),
-    engine_(engineOf(*voidage_)),
+    engine_(voidage_->engine()),
     smoothing_(coarseGraining::New(dict, grid))
 {
     // The smoothed voidage is 1 - the smoothed volume fraction, which
     // Hoomans' 2D-3D map of discs2D is not
-    if (smoothing_->active() && !slab())
+    if (smoothing_->active() && !voidage_->voidageOfFraction())
     {
         FatalIOErrorInFunction(dict)
             << "coarseGraining " << smoothing_->type() << " in "
@@ -65,7 +42,7 @@ Foam::particleModel::particleModel
 void Foam::particleModel::selectEngine
 (
     dem::Settings& s,
-    const cartesianGrid& grid
+    const gasGrid& grid
 ) const
 {
     if (slab())

@@ -97,7 +97,7 @@ void Foam::functionObjects::laceyIndex::calculate(const dpmCloud& cloud)
     mixing::LaceySettings settings(settings_);
     if (!settings.useRegion)
     {
-        const cartesianGrid& grid = cloud.grid();
+        const gasGrid& grid = cloud.grid();
         settings.useRegion = true;
         settings.region = {grid.xMin(), grid.xMax(), grid.yMin(), grid.yMax()};
     }

@@ -34,7 +34,7 @@ void checkVoidage(const fvMesh& mesh)
     {
         const cartesianGrid grid(mesh);
         const label nCells = grid.nx()*grid.ny();
-        const scalar Vc = grid.cellVolume();
+        const scalarField& Vc = grid.cellVolumes();
         Random rnd(11);
 
         // Discs of the given diameters at random in the lowest 2 x 2 cells;
@@ -98,7 +98,7 @@ void checkVoidage(const fvMesh& mesh)
     {
         const cartesianGrid grid(mesh);
         const label nCells = grid.nx()*grid.ny();
-        const scalar Vc = grid.cellVolume();
+        const scalarField& Vc = grid.cellVolumes();
         const scalar voidageMin = 0.1;
         auto select = [&](const char* entries)
         {
@@ -133,7 +133,7 @@ void checkVoidage(const fvMesh& mesh)
                 slab->updateOverlaps(n, x.cdata(), y.cdata(), z.cdata(), d.cdata(), nThreads);
                 slab->updateFields(n, d.cdata(), eps, phiP);
                 const std::string t = " (" + std::to_string(nThreads) + " threads)";
-                check("slab3D: mapped sphere volumes = particles' volume" + t, sum(phiP)*Vc, Vp, 1e-12);
+                check("slab3D: mapped sphere volumes = particles' volume" + t, sum(phiP*Vc), Vp, 1e-12);
                 check("slab3D: voidage = 1 - phiP" + t, max(mag(eps - max(1 - phiP, voidageMin))), 0, 0);
                 label shared = 0;
                 forAll(slab->counts(), i) shared += slab->counts()[i] > 1;
@@ -148,7 +148,7 @@ void checkVoidage(const fvMesh& mesh)
 
                 discs->updateOverlaps(n, x.cdata(), y.cdata(), nullptr, d.cdata(), nThreads);
                 discs->updateFields(n, d.cdata(), eps, phiP);
-                check("discs2D: mapped sphere volumes = particles' volume" + t, sum(phiP)*Vc, Vp, 1e-12);
+                check("discs2D: mapped sphere volumes = particles' volume" + t, sum(phiP*Vc), Vp, 1e-12);
             }
         }
 

@@ -18,7 +18,7 @@ namespace Foam
 }
 
 
-Foam::coarseGraining::coarseGraining(const cartesianGrid& grid)
+Foam::coarseGraining::coarseGraining(const gasGrid& grid)
 :
     grid_(grid)
 {}

@@ -15,7 +15,7 @@ License
 Foam::autoPtr<Foam::coarseGraining> Foam::coarseGraining::New
 (
     const dictionary& dict,
-    const cartesianGrid& grid
+    const gasGrid& grid
 )
 {
     const word choice = choiceEntry

@@ -28,6 +28,25 @@ namespace coarseGrainings
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+const Foam::cartesianGrid& Foam::coarseGrainings::diffusion::cartesianOf
+(
+    const dictionary& dict,
+    const gasGrid& grid
+)
+{
+    const cartesianGrid* cartesian = dynamic_cast<const cartesianGrid*>(&grid);
+    if (!cartesian)
+    {
+        FatalIOErrorInFunction(dict)
+            << "coarseGraining diffusion in " << dict.name() << " diffuses"
+            << " along the lines of a Cartesian grid; the gas grid is "
+            << grid.type() << ": set gasGrid cartesian, or coarseGraining"
+            << " none" << exit(FatalIOError);
+    }
+    return *cartesian;
+}
+
+
 Foam::scalar Foam::coarseGrainings::diffusion::readBandwidth
 (
     const dictionary& dict,
@@ -156,19 +175,21 @@ void Foam::coarseGrainings::diffusion::applyAxis
 Foam::coarseGrainings::diffusion::diffusion
 (
     const dictionary& dict,
-    const cartesianGrid& grid
+    const gasGrid& grid
 )
 :
     coarseGraining(grid),
-    bandwidth_(readBandwidth(dict, grid))
+    cartesian_(cartesianOf(dict, grid)),
+    bandwidth_(readBandwidth(dict, cartesian_))
 {
+    const cartesianGrid& g = cartesian_;
     const scalar T = 0.25*bandwidth_*bandwidth_;
-    const label nx = grid.nx(), ny = grid.ny(), nz = grid.nz();
-    kernel_[0] = makeKernel(nx, grid.dx(), T);
-    kernel_[1] = makeKernel(ny, grid.dy(), T);
+    const label nx = g.nx(), ny = g.ny(), nz = g.nz();
+    kernel_[0] = makeKernel(nx, g.dx(), T);
+    kernel_[1] = makeKernel(ny, g.dy(), T);
     if (nz > 1)
     {
-        kernel_[2] = makeKernel(nz, grid.dz(), T);
+        kernel_[2] = makeKernel(nz, g.dz(), T);
     }
     stride_[0] = 1;
     stride_[1] = nx;
@@ -213,14 +234,15 @@ Foam::string Foam::coarseGrainings::diffusion::description() const
 
 void Foam::coarseGrainings::diffusion::smooth(scalarField& f) const
 {
-    const label nx = grid_.nx(), ny = grid_.ny(), nz = grid_.nz();
+    const cartesianGrid& g = cartesian_;
+    const label nx = g.nx(), ny = g.ny(), nz = g.nz();
     for (label k = 0; k < nz; ++k)
     {
         for (label j = 0; j < ny; ++j)
         {
             for (label i = 0; i < nx; ++i)
             {
-                in_[i + nx*(j + ny*k)] = f[grid_.cellIJK(i, j, k)];
+                in_[i + nx*(j + ny*k)] = f[g.cellIJK(i, j, k)];
             }
         }
     }
@@ -237,7 +259,7 @@ void Foam::coarseGrainings::diffusion::smooth(scalarField& f) const
         {
             for (label i = 0; i < nx; ++i)
             {
-                f[grid_.cellIJK(i, j, k)] = in_[i + nx*(j + ny*k)];
+                f[g.cellIJK(i, j, k)] = in_[i + nx*(j + ny*k)];
             }
         }
     }

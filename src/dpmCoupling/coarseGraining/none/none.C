@@ -25,7 +25,7 @@ namespace coarseGrainings
 Foam::coarseGrainings::none::none
 (
     const dictionary& dict,
-    const cartesianGrid& grid
+    const gasGrid& grid
 )
 :
     coarseGraining(grid)

@@ -42,26 +42,18 @@ Foam::string Foam::couplingFormulations::A::description() const
 void Foam::couplingFormulations::A::checkBedDepth
 (
     const IOdictionary& dict,
-    const cartesianGrid& grid,
-    const scalarList& diameters,
-    const bool slab,
+    const scalar depth,
+    const scalar dMax,
+    const scalar phiPMax,
     const scalar voidageMin
 ) const
 {
-    // The densest packing of the largest particles fills phiP =
-    // pi/(2 sqrt 3) (2/3) d/depth of a cell's volume (hexagonal discs), at
-    // most pi/(3 sqrt 2) (spheres in the slab mode)
-    scalar dMax = 0;
-    for (const scalar d : diameters) dMax = max(dMax, d);
-    const scalar pi = constant::mathematical::pi;
-    const scalar phiPMax =
-        slab ? pi/(3*sqrt(2.0)) : pi/(3*sqrt(3.0))*dMax/grid.depth();
     if (phiPMax > 1 - voidageMin)
     {
         WarningInFunction
             << "Formulation A in " << dict.instance()/dict.name()
             << ": the bed depth "
-            << grid.depth() << " m is thin for particles of " << dMax
+            << depth << " m is thin for particles of " << dMax
             << " m: packed densely they fill phiP = " << phiPMax
             << " of a cell, more than 1 - voidageMin = " << 1 - voidageMin
             << "; there eps_g = 1 - phiP is held at voidageMin and A no"
@@ -75,10 +67,11 @@ void Foam::couplingFormulations::A::addPressureForce
 (
     dem::Simulation& particles,
     scalarField& K,
-    const cartesianGrid& grid,
+    const cellWeights& stencils,
     const volScalarField& p_rgh,
     const volScalarField& particleFraction,
     const scalar voidageMin,
+    const bool withZ,
     const label nThreads
 ) const
 {
@@ -90,26 +83,21 @@ void Foam::couplingFormulations::A::addPressureForce
     const scalarField& phiP = particleFraction.primitiveField();
     const scalar pi = constant::mathematical::pi;
     const label n = label(particles.size());
-    const double* x = particles.x();
-    const double* y = particles.y();
-    const bool inDepth = grid.resolvedInDepth();
-    const double* z = inDepth ? particles.z() : nullptr;
     const double* d = particles.diameter();
     double* Kd = particles.dragCoefficient();
     double* fX = particles.extraForceX();
     double* fY = particles.extraForceY();
-    double* fZ = inDepth ? particles.extraForceZ() : nullptr;
+    double* fZ = withZ ? particles.extraForceZ() : nullptr;
+    const label S = stencils.stride;
+    const labelList& cells = stencils.cells;
+    const scalarList& w = stencils.weights;
 
     #pragma omp parallel for num_threads(nThreads) schedule(static)
     for (label i = 0; i < n; ++i)
     {
-        label cells[8];
-        scalar w[8];
-        const label count =
-            grid.interpolationStencil(x[i], y[i], z ? z[i] : 0, cells, w);
         scalar epsG = 0;
         vector gradPi = Zero;
-        for (label k = 0; k < count; ++k)
+        for (label k = S*i; k < S*i + stencils.counts[i]; ++k)
         {
             epsG += w[k]*max(1 - phiP[cells[k]], voidageMin);
             gradPi += w[k]*gp[cells[k]];

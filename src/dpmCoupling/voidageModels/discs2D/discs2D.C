@@ -27,13 +27,24 @@ namespace voidageModels
 Foam::voidageModels::discs2D::discs2D
 (
     const dictionary& dict,
-    const cartesianGrid& grid,
+    const gasGrid& grid,
     const scalar voidageMin
 )
 :
     voidageModel(grid, voidageMin)
 {
     requireOneCellThick(dict);
+}
+
+
+Foam::scalar Foam::voidageModels::discs2D::densestFraction
+(
+    const scalar d
+) const
+{
+    // Hexagonal discs fill pi/(2 sqrt 3) of the plane, each the volume
+    // (2/3) d of its area through the depth
+    return constant::mathematical::pi/(3*sqrt(3.0))*d/grid_.depth();
 }
 
 
@@ -56,15 +67,7 @@ void Foam::voidageModels::discs2D::updateOverlaps
 )
 {
     // The costly part (segment areas): on the DEM's threads
-    storeOverlaps
-    (
-        n, d, nThreads,
-        [this, x, y](const label i, const scalar r, const auto& op)
-        {
-            grid_.forEachDiscOverlap(x[i], y[i], r, op);
-        },
-        [](const scalar r) { return constant::mathematical::pi*r*r; }
-    );
+    grid_.discShares(n, x, y, d, nThreads, shares_);
 }
 
 
@@ -76,8 +79,12 @@ void Foam::voidageModels::discs2D::updateFields
     scalarField& phiP
 )
 {
-    const scalar cellArea = grid_.dx()*grid_.dy();
-    const scalar Vc = grid_.cellVolume();
+    const scalarField& cellArea = grid_.cellAreas();
+    const scalarField& Vc = grid_.cellVolumes();
+    const label S = shares_.stride;
+    const labelList& counts = shares_.counts;
+    const labelList& cells = shares_.cells;
+    const scalarList& fractions = shares_.weights;
 
     porosity2D_.setSize(voidage.size());
     porosity2D_ = 1;
@@ -86,12 +93,13 @@ void Foam::voidageModels::discs2D::updateFields
     {
         const scalar r = 0.5*d[i];
         const scalar discArea = constant::mathematical::pi*r*r;
-        const scalar VpByVc = discArea*4*r/(3*Vc);
-        for (label k = stride_*i; k < stride_*i + counts_[i]; ++k)
+        // 3 V_p, the sphere's volume of the disc's diameter
+        const scalar threeVp = discArea*4*r;
+        for (label k = S*i; k < S*i + counts[i]; ++k)
         {
-            const label c = cells_[k];
-            porosity2D_[c] -= fractions_[k]*discArea/cellArea;
-            phiP[c] += VpByVc*fractions_[k];
+            const label c = cells[k];
+            porosity2D_[c] -= fractions[k]*discArea/cellArea[c];
+            phiP[c] += threeVp/(3*Vc[c])*fractions[k];
         }
     }
 
@@ -116,7 +124,7 @@ void Foam::voidageModels::discs2D::reportBalance
     {
         particleArea += constant::mathematical::pi*d[i]*d[i]/4;
     }
-    const scalar mappedArea = gSum(1 - porosity2D_)*grid_.dx()*grid_.dy();
+    const scalar mappedArea = gSum((1 - porosity2D_)*grid_.cellAreas());
 
     os  << "Exchange: particle area " << particleArea
         << " m2, mapped to cells " << mappedArea << " m2" << endl;

@@ -10,7 +10,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "slab3D.H"
-#include "forEachSphereOverlap.H"
 #include "OStringStream.H"
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
@@ -28,7 +27,7 @@ namespace voidageModels
 Foam::voidageModels::slab3D::slab3D
 (
     const dictionary& dict,
-    const cartesianGrid& grid,
+    const gasGrid& grid,
     const scalar voidageMin
 )
 :
@@ -40,13 +39,22 @@ Foam::voidageModels::slab3D::slab3D
 
 Foam::voidageModels::slab3D::slab3D
 (
-    const cartesianGrid& grid,
-    const scalar voidageMin,
-    const label stride
+    const gasGrid& grid,
+    const scalar voidageMin
 )
 :
-    voidageModel(grid, voidageMin, stride)
+    voidageModel(grid, voidageMin)
 {}
+
+
+Foam::scalar Foam::voidageModels::slab3D::densestFraction
+(
+    const scalar
+) const
+{
+    // Spheres in face-centred cubic packing
+    return constant::mathematical::pi/(3*sqrt(2.0));
+}
 
 
 Foam::string Foam::voidageModels::slab3D::description() const
@@ -56,6 +64,14 @@ Foam::string Foam::voidageModels::slab3D::description() const
         << " m deep (the mesh's thickness), eps = 1 - (sphere volume in the"
         << " cell column)/(cell volume), used as it is";
     return os.str();
+}
+
+
+void Foam::voidageModels::slab3D::report(Ostream& os) const
+{
+    os  << "    slab mode: 3D spheres between walls z = 0 and z = "
+        << grid_.depth() << " m (the mesh's thickness); gas velocity z = 0"
+        << endl;
 }
 
 
@@ -91,15 +107,7 @@ void Foam::voidageModels::slab3D::updateOverlaps
     const label nThreads
 )
 {
-    storeOverlaps
-    (
-        n, d, nThreads,
-        [this, x, y](const label i, const scalar r, const auto& op)
-        {
-            forEachSphereOverlap(grid_, x[i], y[i], r, op);
-        },
-        [](const scalar r) { return 4*constant::mathematical::pi*r*r*r/3; }
-    );
+    grid_.sphereColumnShares(n, x, y, d, nThreads, shares_);
 }
 
 
@@ -111,16 +119,21 @@ void Foam::voidageModels::slab3D::updateFields
     scalarField& phiP
 )
 {
-    const scalar Vc = grid_.cellVolume();
+    const scalarField& Vc = grid_.cellVolumes();
+    const label S = shares_.stride;
+    const labelList& counts = shares_.counts;
+    const labelList& cells = shares_.cells;
+    const scalarList& fractions = shares_.weights;
 
     phiP = 0;
     for (label i = 0; i < n; ++i)
     {
         const scalar r = 0.5*d[i];
-        const scalar VpByVc = 4*constant::mathematical::pi*r*r*r/(3*Vc);
-        for (label k = stride_*i; k < stride_*i + counts_[i]; ++k)
+        const scalar threeVp = 4*constant::mathematical::pi*r*r*r;
+        for (label k = S*i; k < S*i + counts[i]; ++k)
         {
-            phiP[cells_[k]] += VpByVc*fractions_[k];
+            const label c = cells[k];
+            phiP[c] += threeVp/(3*Vc[c])*fractions[k];
         }
     }
 
@@ -146,7 +159,7 @@ void Foam::voidageModels::slab3D::reportBalance
     }
 
     os  << "Exchange: particle volume " << particleVolume
-        << " m3, mapped to cells " << gSum(phiP)*grid_.cellVolume()
+        << " m3, mapped to cells " << gSum(phiP*grid_.cellVolumes())
         << " m3" << endl;
 }
 

@@ -10,7 +10,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "spheres3D.H"
-#include "forEachSphereBoxOverlap.H"
 #include "knownEntries.H"
 #include "positiveEntry.H"
 #include "OStringStream.H"
@@ -27,25 +26,12 @@ namespace voidageModels
 }
 
 
-namespace
-{
-    // The cells a sphere of diameter D spans at most, in all directions
-    Foam::label cellsSpanned(const Foam::cartesianGrid& grid, const Foam::scalar D)
-    {
-        using Foam::sphereCellSpan;
-        return
-            sphereCellSpan(D, grid.dx())*sphereCellSpan(D, grid.dy())
-           *(grid.resolvedInDepth() ? sphereCellSpan(D, grid.dz()) : 1);
-    }
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::scalar Foam::voidageModels::spheres3D::spreadingDiameter
 (
     const dictionary& dict,
-    const cartesianGrid& grid
+    const gasGrid& grid
 )
 {
     const dictionary* coeffs = dict.findDict("spheres3DCoeffs");
@@ -55,13 +41,10 @@ Foam::scalar Foam::voidageModels::spheres3D::spreadingDiameter
         *coeffs, wordList{"spreadingDiameter"},
         "constant/particleProperties/spheres3DCoeffs"
     );
-    // A sphere of diameter D spans ceil(D/h) + 1 cells of size h, at most
-    // maxSplits + 1
-    const scalar largest =
-        sphereBoxDetail::maxSplits*grid.minCellSize();
     return boundedEntryOrDefault
     (
-        *coeffs, "spreadingDiameter", 0, 0, largest, false
+        *coeffs, "spreadingDiameter", 0, 0, grid.largestSpreadingDiameter(),
+        false
     );
 }
 
@@ -69,19 +52,11 @@ Foam::scalar Foam::voidageModels::spheres3D::spreadingDiameter
 Foam::voidageModels::spheres3D::spheres3D
 (
     const dictionary& dict,
-    const cartesianGrid& grid,
+    const gasGrid& grid,
     const scalar voidageMin
 )
 :
-    // The particles are at most one cell across (the cloud checks it)
-    slab3D
-    (
-        grid, voidageMin,
-        cellsSpanned
-        (
-            grid, max(spreadingDiameter(dict, grid), grid.minCellSize())
-        )
-    ),
+    slab3D(grid, voidageMin),
     spreadingDiameter_(spreadingDiameter(dict, grid))
 {}
 
@@ -91,8 +66,8 @@ Foam::voidageModels::spheres3D::spheres3D
 Foam::string Foam::voidageModels::spheres3D::description() const
 {
     OStringStream os;
-    os  << "voidage model spheres3D: spheres in " << grid_.nx() << " x "
-        << grid_.ny() << " x " << grid_.nz() << " gas cells, eps = 1 -"
+    os  << "voidage model spheres3D: spheres in "
+        << grid_.cellCounts().c_str() << " gas cells, eps = 1 -"
         << " (sphere volume in the cell)/(cell volume), used as it is; ";
     if (spreadingDiameter_ > 0)
     {
@@ -107,6 +82,19 @@ Foam::string Foam::voidageModels::spheres3D::description() const
 }
 
 
+void Foam::voidageModels::spheres3D::report(Ostream& os) const
+{
+    if (!grid_.resolvedInDepth())
+    {
+        slab3D::report(os);
+        return;
+    }
+    os  << "    3D spheres between walls z = 0 and z = " << grid_.depth()
+        << " m in a gas resolved in depth (" << grid_.cellCounts().c_str()
+        << " cells)" << endl;
+}
+
+
 void Foam::voidageModels::spheres3D::updateOverlaps
 (
     const label n,
@@ -117,20 +105,7 @@ void Foam::voidageModels::spheres3D::updateOverlaps
     const label nThreads
 )
 {
-    const scalar Rs = 0.5*spreadingDiameter_;
-    storeOverlaps
-    (
-        n, d, nThreads,
-        [this, x, y, z, Rs](const label i, const scalar r, const auto& op)
-        {
-            forEachSphereBoxOverlap(grid_, x[i], y[i], z[i], max(r, Rs), op);
-        },
-        [Rs](const scalar r)
-        {
-            const scalar R = max(r, Rs);
-            return 4*constant::mathematical::pi*R*R*R/3;
-        }
-    );
+    grid_.sphereShares(n, x, y, z, d, spreadingDiameter_, nThreads, shares_);
 }
 
 

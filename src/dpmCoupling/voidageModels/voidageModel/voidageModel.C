@@ -20,13 +20,11 @@ namespace Foam
 
 Foam::voidageModel::voidageModel
 (
-    const cartesianGrid& grid,
-    const scalar voidageMin,
-    const label stride
+    const gasGrid& grid,
+    const scalar voidageMin
 )
 :
     grid_(grid),
-    stride_(stride),
     voidageMin_(voidageMin)
 {}
 
@@ -38,7 +36,7 @@ void Foam::voidageModel::requireOneCellThick(const dictionary& dict) const
         FatalIOErrorInFunction(dict)
             << "voidageModel " << type() << " in " << dict.name()
             << " needs a gas mesh one cell thick in z, but the mesh has "
-            << grid_.nz() << " cells through its depth (system/bedGeometry"
+            << grid_.cellCounts().c_str() << " cells (system/bedGeometry"
             << " nz); use nz 1, or voidageModel spheres3D for a gas resolved"
             << " in depth" << exit(FatalIOError);
     }

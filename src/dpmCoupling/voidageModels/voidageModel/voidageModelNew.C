@@ -15,7 +15,7 @@ License
 Foam::autoPtr<Foam::voidageModel> Foam::voidageModel::New
 (
     const dictionary& dict,
-    const cartesianGrid& grid,
+    const gasGrid& grid,
     const scalar voidageMin
 )
 {

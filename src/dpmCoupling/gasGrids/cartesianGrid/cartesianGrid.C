@@ -11,11 +11,23 @@ License
 
 #include "cartesianGrid.H"
 #include "volFields.H"
+#include "OStringStream.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(cartesianGrid, 0);
+    addToRunTimeSelectionTable(gasGrid, cartesianGrid, mesh);
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::cartesianGrid::cartesianGrid(const fvMesh& mesh)
 :
+    gasGrid(mesh),
     x0_(0), y0_(0), z0_(0),
     dx_(0), dy_(0), dz_(0), depth_(0),
     nx_(0), ny_(0), nz_(0)
@@ -115,6 +127,55 @@ Foam::cartesianGrid::cartesianGrid(const fvMesh& mesh)
             << "The cells of " << mesh.time().path()
             << " do not fill a box-shaped grid" << exit(FatalError);
     }
+
+    bounds_ = boundBox
+    (
+        point(x0_, y0_, z0_),
+        point(x0_ + nx_*dx_, y0_ + ny_*dy_, z0_ + depth_)
+    );
+    cellVolumes_.setSize(mesh.nCells(), dx_*dy_*dz_);
+    cellAreas_.setSize(mesh.nCells(), dx_*dy_);
 }
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::string Foam::cartesianGrid::cellSize() const
+{
+    OStringStream os;
+    os  << dx_ << " x " << dy_;
+    if (resolvedInDepth())
+    {
+        os  << " x " << dz_;
+    }
+    return os.str();
+}
+
+
+Foam::string Foam::cartesianGrid::cellCounts() const
+{
+    OStringStream os;
+    os  << nx_ << " x " << ny_ << " x " << nz_;
+    return os.str();
+}
+
+
+void Foam::cartesianGrid::report(Ostream& os) const
+{
+    os  << "    bed depth (mesh thickness) " << depth_*1e3 << " mm, gas cells "
+        << dx_*1e3 << " x " << dy_*1e3;
+    if (resolvedInDepth())
+    {
+        os  << " x " << dz_*1e3 << " mm (" << nx_ << " x " << ny_ << " x "
+            << nz_ << ")" << nl;
+    }
+    else
+    {
+        os  << " mm (" << nx_ << " x " << ny_ << ")" << nl;
+    }
+}
+
+
+// ************************************************************************* //
 
 
