@@ -26,6 +26,7 @@
 # naming the dictionary, the entry and what is allowed.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
+. "$testsDir/functionObjects/testFunctions"
 export WM_PROJECT_SITE="${WM_PROJECT_SITE:-$DPMFOAM2D_PROJECT}"
 
 atRest()     # <dir> <U0byUmf> <endTime>: a case with bedAtRest
@@ -155,36 +156,10 @@ check . "$stop" 1 yes || fail "the restarted run's rows or end differ (above)"
 [ "$(ls -d "$workDir"/packed/[0-9]* | xargs -n1 basename | sort -g | tail -1)" \
   = "$(ls -d [0-9]* | sort -g | tail -1)" ] || fail "the restarted run ends elsewhere than the uninterrupted one"
 
-# expectFailure <name> <entries> <pattern>...: the run fails, its log holds each pattern
-expectFailure()
-{
-    local name="$1" entries="$2"
-    shift 2
-    rm -rf postProcessing 0.* [1-9]*
-    cp controlDict.base system/controlDict
-    setEntry system/controlDict endTime 0.02
-    cat >>system/controlDict <<EOF2
-functions
-{
-    rest
-    {
-        #includeEtc "caseDicts/postProcessing/segregation/bedAtRest"
-        $entries
-    }
-}
-EOF2
-    dpmFoam2D >"log.$name" 2>&1 && fail "$name: dpmFoam2D ran; expected an error"
-    for pattern in "$@"
-    do
-        grep -q -- "$pattern" "log.$name" \
-            || { sed -n '/FOAM FATAL/,$p' "log.$name"; fail "$name: no '$pattern' in log.$name"; }
-    done
-    echo "  $name: $(grep -m1 -A3 'FOAM FATAL' "log.$name" | sed -n 2p)"
-}
-expectFailure speed "speed 0;" \
+expectFailure speed segregation/bedAtRest rest "speed 0;" \
     "Entry 'speed' = 0" "controlDict.functions.rest" "allowed: .* > 0"
-expectFailure duration "duration -1;" \
+expectFailure duration segregation/bedAtRest rest "duration -1;" \
     "Entry 'duration' = -1" "allowed: .* > 0"
-expectFailure unknown "durration 1;" "durration" "duration"
+expectFailure unknown segregation/bedAtRest rest "durration 1;" "durration" "duration"
 
 pass "bedAtRest measures the bed's speed as the particle files give it, ends a packed bed's run after its rest, not a bubbling one's, and restarts knowing since when"

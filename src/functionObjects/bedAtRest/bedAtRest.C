@@ -116,11 +116,10 @@ void Foam::functionObjects::bedAtRest::sample()
 
     // Half a step's tolerance: the sample times are sums of steps
     const scalar halfStep = 0.5*time_.deltaTValue();
-    const scalar nextStep = t + time_.deltaTValue();
     if
     (
         restSince_ >= 0 && t - restSince_ >= duration_ - halfStep
-     && endRun_ && nextStep < time_.endTime().value()
+     && endRun_ && cloudFunctionObject::endAfterNextStep(time_)
     )
     {
         Info<< type() << ' ' << name() << ": the bed has been at rest"
@@ -128,7 +127,6 @@ void Foam::functionObjects::bedAtRest::sample()
             << restSince_ << ", for " << duration_ << " s by t = "
             << time_.timeName() << "; ending the run after one more step"
             << endl;
-        const_cast<Time&>(time_).setEndTime(nextStep);
     }
 }
 
@@ -177,13 +175,12 @@ Foam::functionObjects::bedAtRest::bedAtRest
     // Since when the bed was at rest before a restart, then the start's
     // own particle file
     getProperty("restSince", restSince_);
-    const scalar t = runTime.value();
     if
     (
-        !functionObject::postProcess
-     && mesh_.foundObject<dpmCloud>(cloudName_)
-     && t >= dict.lookupOrDefault<scalar>("timeStart", -GREAT)
-     && t <= dict.lookupOrDefault<scalar>("timeEnd", GREAT)
+        cloudFunctionObject::samplesStart
+        (
+            mesh_, cloudName_, dict, runTime.value()
+        )
     )
     {
         sample();
