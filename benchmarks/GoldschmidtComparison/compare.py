@@ -32,6 +32,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.realpath(__file__))
 from dpmfoam2d import bed_statistics as bedStats, fields as ff  # noqa: E402
+from dpmfoam2d.statistics import dominant_frequency  # noqa: E402
 
 # The tutorial's spheres and gas (constant/kinematicCloudProperties,
 # transportProperties) and its box's depth and height (blockMeshDict); the
@@ -116,23 +117,6 @@ def bed_record(case, field, axis):
     return np.array(out).reshape(-1, 3)
 
 
-def dominant_frequency(t, x):
-    """Peak of Welch's spectrum of x (uniform t) and the spectrum's bin width."""
-    dt = np.median(np.diff(t))
-    n = min(len(x), int(round(WINDOW / dt)))
-    if n < 8:
-        return np.nan, np.nan
-    w = np.hanning(n)
-    step = max(n // 2, 1)
-    psd = 0
-    for s in range(0, len(x) - n + 1, step):
-        seg = x[s:s + n] - x[s:s + n].mean()
-        psd = psd + np.abs(np.fft.rfft(seg * w)) ** 2
-    f = np.fft.rfftfreq(n, dt)
-    k = 1 + np.argmax(psd[1:])          # not the mean
-    return f[k], f[1]
-
-
 def wall_times(case):
     """(wall s, simulated s, load averages) summed over the case's runs."""
     path = os.path.join(case, "timing")
@@ -184,7 +168,9 @@ def statistics(case, name, transient):
     if keep.sum() > 1:
         s["pressureDropMean"] = dp[keep].mean()
         s["pressureDropRms"] = dp[keep].std()
-        s["frequency"], s["bin"] = dominant_frequency(t[keep], dp[keep])
+        # the peak of Welch's spectrum (WINDOW-s segments) and its bin width
+        s["frequency"], s["bin"] = dominant_frequency(
+            dp[keep], 1.0 / np.median(np.diff(t[keep])), segment=WINDOW)
     bed = bed_record(case, field, axis)
     keep = bed[:, 0] > transient + 1e-9
     s["fields"] = int(keep.sum())

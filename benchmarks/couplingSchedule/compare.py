@@ -10,15 +10,9 @@ import sys
 import numpy as np
 
 from dpmfoam2d import particles as pio, tables  # noqa: E402
+from dpmfoam2d.statistics import mean_interval  # noqa: E402
 
 BLOCK = 0.5     # s, the block of the block means
-T95 = {1: 12.71, 2: 4.30, 3: 3.18, 4: 2.78, 5: 2.57, 6: 2.45, 7: 2.36,
-       8: 2.31, 9: 2.26, 10: 2.23, 12: 2.18, 15: 2.13, 20: 2.09, 30: 2.04}
-
-
-def t95(dof):
-    keys = sorted(k for k in T95 if k <= dof)
-    return T95[keys[-1]] if keys else float("nan")
 
 
 def positions(case, t):
@@ -34,9 +28,7 @@ def block_mean(time, value, start):
     time, value = time[keep], value[keep]
     blocks = np.floor((time - start - 1e-9) / BLOCK).astype(int)
     means = np.array([value[blocks == b].mean() for b in np.unique(blocks)])
-    n = len(means)
-    half = t95(n - 1) * means.std(ddof=1) / np.sqrt(n) if n > 1 else np.nan
-    return means.mean(), half
+    return mean_interval(means, 0.95)
 
 
 def probe(case):

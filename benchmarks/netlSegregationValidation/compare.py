@@ -41,8 +41,9 @@ repeats').
 The surface is the height below which 99 % of the glass centres lie; 95 %
 and 99.9 % bracket it (their means are printed).
 
-An intruder that has not risen by a seed's end time is censored: its rise
-time is only known to exceed the end time. Where a condition has censored
+An intruder that has not risen by a seed's end is censored: its rise time
+is only known to exceed the time the run ended (its end time, or sooner
+where the bed came to rest and bedAtRest ended it: marked "at rest"). Where a condition has censored
 seeds, the mean is given as a lower bound (the censored taken at their end
 time, marked >=); criterion 1 is then not met if even that bound's 90 %
 interval lies above +Delta, and undecided otherwise. A trend is met if it is
@@ -55,8 +56,9 @@ undecided otherwise.
 
 -figure draws each condition's rise times, the seeds' beside the
 experiment's repeats, with the means and their intervals. -perSeed also
-prints each seed's rise times (surface at 99 %; >= a censored one, at its
-end time): the record a results page keeps.
+prints each seed's rise times (surface at 99 %; >= a censored one, at the
+time its run ended; "at rest" where the bed came to rest): the record a
+results page keeps.
 """
 
 import math
@@ -128,25 +130,34 @@ def experiment(reference, condition):
 
 
 def end_time(case):
-    """The run's end time: its controlDict's endTime (s); a refusal naming
-    the seed when it cannot be read, as its censored rise times need it."""
-    path = os.path.join(case, "system", "controlDict")
-    why = "no file %s" % path
-    if os.path.isfile(path):
-        with open(path, errors="replace") as f:
-            found = re.findall(r"^endTime\s+([^;]*);", f.read(), re.M)
-        why = "no endTime in %s" % path
-        if found:       # the last, as OpenFOAM reads it
-            try:
-                t = float(found[-1])
-                if np.isfinite(t) and t > 0:
-                    return t
-            except ValueError:
-                pass
-            why = "its endTime '%s' (%s) is not a time in s" % (found[-1].strip(), path)
-    refuse("seed %s: an intruder not risen by the end (nan in riseOrder.dat), and the end "
-           "time it stands for cannot be read: %s; give the seed a plain 'endTime <s>;' or "
-           "leave it out of the run folder" % (case, why))
+    """The time the run ended (s): its latest time directory, which is the
+    end time, or sooner where intrudersRisen or bedAtRest ended the run; a
+    refusal naming the seed when it has none, as its censored rise times
+    need it."""
+    times = []
+    for name in os.listdir(case):
+        try:
+            t = float(name)
+        except ValueError:
+            continue
+        if math.isfinite(t) and t > 0 and os.path.isdir(os.path.join(case, name)):
+            times.append(t)
+    if times:
+        return max(times)
+    refuse("seed %s: an intruder not risen by the end (nan in riseOrder.dat), and no time "
+           "directory after 0 to tell when the run ended; rerun the seed or leave it out of "
+           "the run folder" % case)
+
+
+def came_to_rest(case):
+    """Whether the bed came to rest and bedAtRest ended the run (its line in
+    log.dpmFoam2D)."""
+    log = os.path.join(case, "log.dpmFoam2D")
+    if not os.path.isfile(log):
+        return False
+    with open(log, errors="replace") as f:
+        return any(line.startswith("bedAtRest ") and ": the bed has been at rest" in line
+                   for line in f)
 
 
 def seed_times(case, intruders):
@@ -241,9 +252,9 @@ def print_per_seed(run, conditions, intruders):
             found = seed_times(case, intruders[c])
             if found is not None:
                 t, cens = found
-                print("| %s | %s | %s |" % (c, case.rsplit("_seed", 1)[1], ", ".join(
+                print("| %s | %s | %s%s |" % (c, case.rsplit("_seed", 1)[1], ", ".join(
                     "%s%.2f" % (">=" if cens[k, SURFACE] else "", t[k, SURFACE])
-                    for k in range(len(t)))))
+                    for k in range(len(t))), " (at rest)" if came_to_rest(case) else ""))
 
 
 def draw(drawn, path):

@@ -24,10 +24,10 @@ import os
 import sys
 
 import numpy as np
-from scipy import signal
 
 import vanWachemData as data
 import vanWachemFigures as figures
+from dpmfoam2d.statistics import dominant_frequency, spectrum
 
 # Fixed before the first long run: |ours - experiment| / experiment
 TOLERANCES = {
@@ -45,8 +45,11 @@ WINDOWS = {"pressure": (3.0, 6.0), "height": (2.0, 4.0)}
 # of the linear interpolant over its interval (a denser record is averaged,
 # a sparser one, the digitized curves, interpolated)
 RATES = {"pressure": 1000.0, "height": 100.0}
-# Welch: Hann segments of half the experiment's record, 50 % overlap (three
-# segments of the experiment's, more of a longer run's, the same bins)
+# The spectrum (dpmfoam2d.statistics.spectrum): Welch's, Hann segments of
+# half the experiment's record, 50 % overlap (three segments of the
+# experiment's, more of a longer run's, the same bins). The dominant
+# frequency: the whole record as one segment (the Hann periodogram), whose
+# resolution 1/record a 3-s record needs, zero-padded to FREQUENCY_STEP
 SEGMENTS = {"pressure": 1.5, "height": 1.0}
 FREQUENCY_STEP = 0.01           # Hz, the zero-padded periodogram's grid
 MIN_SAMPLES = 8                 # of a record on its grid, for any statistics
@@ -101,22 +104,6 @@ def uniform(t, x, rate):
     return 0.5 * (edges[1:] + edges[:-1]), mean
 
 
-def dominant_frequency(x, rate, lowest):
-    """(frequency, resolution) of the peak of the Hann-windowed periodogram
-    of the whole record, zero-padded to FREQUENCY_STEP, at or above lowest
-    (the same band for the experiment and the runs); the resolution is
-    1/record."""
-    n = len(x)
-    span = n / rate
-    nfft = max(n, int(round(rate / FREQUENCY_STEP)))
-    power = np.abs(np.fft.rfft((x - x.mean()) * np.hanning(n), nfft)) ** 2
-    f = np.fft.rfftfreq(nfft, 1.0 / rate)
-    band = (f >= lowest - 1e-9) & (f > 0)
-    if not band.any():
-        return np.nan, np.nan
-    return f[band][np.argmax(power[band])], 1.0 / span
-
-
 def signal_statistics(t, x, kind):
     """Mean, rms, peak-to-peak (median over windows of the experiment's
     record length), dominant frequency and Welch spectrum of one record."""
@@ -129,12 +116,11 @@ def signal_statistics(t, x, kind):
     n = int(round((WINDOWS[kind][1] - WINDOWS[kind][0]) * rate))
     chunks = [xu[k:k + n] for k in range(0, len(xu) - n + 1, n)] or [xu]
     s["peakToPeak"] = float(np.median([np.ptp(c) for c in chunks]))
-    # one cycle per experiment's record: the lowest frequency it shows
+    # one cycle per experiment's record: the lowest frequency it shows (the
+    # same band for the experiment and the runs); the resolution 1/record
     s["frequency"], s["resolution"] = dominant_frequency(
-        xu, rate, 1.0 / (WINDOWS[kind][1] - WINDOWS[kind][0]))
-    nseg = min(len(xu), int(round(SEGMENTS[kind] * rate)))
-    s["f"], s["psd"] = signal.welch(xu - xu.mean(), fs=rate, window="hann",
-                                    nperseg=nseg, noverlap=nseg // 2)
+        xu, rate, lowest=1.0 / (WINDOWS[kind][1] - WINDOWS[kind][0]), step=FREQUENCY_STEP)
+    s["f"], s["psd"] = spectrum(xu, rate, segment=SEGMENTS[kind])
     s["spectrumPeak"] = s["psd"][1:].max()
     return s
 

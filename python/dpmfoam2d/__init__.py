@@ -1,7 +1,8 @@
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
 """dpmfoam2d: what a dpmFoam2D case writes, read into numpy, and the
-project's commands (bin/ holds their launchers).
+project's commands (console scripts of the package; the project's bin/
+holds launchers of the same functions).
 
     import dpmfoam2d as dpm
     M = dpm.lacey("myCase")              # M(t): columns Time, M, ...
@@ -21,9 +22,9 @@ Modules:
     statistics      Welch intervals, equivalence tests (TOST) and V&V 20's
                     validation uncertainty, for comparisons with experiments
     study           the study runner and its results (dpmStudy)
+    project         the project's tree and programs, from its environment
+                    (DPMFOAM2D_PROJECT, PATH), where a function needs them
 """
-
-import os
 
 __version__ = "0.1.0"
 
@@ -33,8 +34,4 @@ from .fields import cell_geometry, internal_field, time_dirs
 
 __all__ = ["FIELDS", "list_times", "nearest_time", "particles_at", "read_particles", "lacey",
            "read_dat", "read_postprocessing", "segregation", "study_table", "cell_geometry",
-           "internal_field", "time_dirs", "PROJECT_DIR", "BIN_DIR", "__version__"]
-
-# The project's checkout (the package is its python/dpmfoam2d)
-PROJECT_DIR = os.path.realpath(os.path.join(os.path.dirname(__file__), "..", ".."))
-BIN_DIR = os.path.join(PROJECT_DIR, "bin")
+           "internal_field", "time_dirs", "__version__"]

@@ -33,6 +33,8 @@ writeCellCentres and writeCellVolumes (source etc/bashrc first).
 -report prints a JSON line with the means over the whole run.
 """
 
+from __future__ import annotations
+
 import argparse
 import json
 import os
@@ -48,7 +50,7 @@ CLASSES = ("Small", "Large")
 OUT = os.path.join("postProcessing", "bedStatistics", "0")
 
 
-def row_levels(y):
+def row_levels(y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Index of each cell's row (cells with the same centre height, to
     1e-9 of the mesh height) and the rows' heights, bottom up."""
     span = max(y.max() - y.min(), 1e-300)
@@ -58,7 +60,8 @@ def row_levels(y):
     return index, heights
 
 
-def bed_row(voidage, volume, row, heights, bubble, surface):
+def bed_row(voidage: np.ndarray, volume: np.ndarray, row: np.ndarray, heights: np.ndarray,
+            bubble: float, surface: float) -> tuple[float, float, float]:
     """(bedHeight, bubbleFraction, emulsionVoidage) of one voidage field."""
     nrow = len(heights)
     rowVoidage = np.bincount(row, voidage * volume, nrow) / np.bincount(row, volume, nrow)
@@ -77,7 +80,7 @@ def bed_row(voidage, volume, row, heights, bubble, surface):
     return height, fraction, emulsionVoidage
 
 
-def bed_table(case, bubble, surface):
+def bed_table(case: str, bubble: float, surface: float) -> list[tuple]:
     C, V = ff.cell_geometry(case)
     row, heights = row_levels(C[:, 1])
     rows = []
@@ -92,7 +95,7 @@ def bed_table(case, bubble, surface):
     return rows
 
 
-def particle_table(case, still, every):
+def particle_table(case: str, still: float, every: float) -> list[list[float]]:
     rows = []
     next_t = -np.inf
     for t, path in pio.list_times(case):
@@ -132,8 +135,48 @@ def write_table(path, comment, names, rows):
             f.write("\t".join("%-24.17g" % v for v in r).rstrip() + "\n")
 
 
+BED_COLUMNS = ["Time", "bedHeight", "bubbleFraction", "emulsionVoidage"]
+PARTICLE_COLUMNS = ["Time"] + [q + c for c in CLASSES for q in ("speedRms", "still")] + \
+    ["voidage" + c for c in CLASSES]
+
+
+class BedStatisticsError(ValueError):
+    """A case whose bed statistics cannot be made, with the reason."""
+
+
+def write_bed_statistics(case: str, bubble: float = 0.8, surface: float = 0.7,
+                         still: float = 0.01, every: float = 0.1):
+    """bed.dat and particles.dat of the case's postProcessing/bedStatistics/0
+    (see the module's usage); returns (bed rows, particle rows, the folder).
+    BedStatisticsError for a directory that is no case, or one without
+    voidage fields and particle files; ValueError for a field that cannot
+    be read."""
+    if not os.path.isdir(case):
+        raise BedStatisticsError("no case directory %s" % case)
+    if not os.path.isfile(os.path.join(case, "system", "controlDict")) \
+            and not os.path.isdir(os.path.join(case, "particles")):
+        raise BedStatisticsError("%s is not a dpmFoam2D case (no system/controlDict"
+                                 " or particles/)" % case)
+    bed = bed_table(case, bubble, surface)
+    parts = particle_table(case, still, every)
+    if not bed and not parts:
+        raise BedStatisticsError("%s has no voidage fields and no particle files" % case)
+    out = os.path.join(case, OUT)
+    os.makedirs(out, exist_ok=True)
+    write_table(os.path.join(out, "bed.dat"),
+                ["Bed surface, bubbles (cells of voidage > %g) and emulsion, from the "
+                 "voidage fields" % bubble,
+                 "surfaceVoidage         : %g" % surface],
+                BED_COLUMNS, bed)
+    write_table(os.path.join(out, "particles.dat"),
+                ["Particle motion per class (still: speed < %g m/s) and the voidage "
+                 "at the particles" % still],
+                PARTICLE_COLUMNS, parts)
+    return bed, parts, out
+
+
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+    ap = argparse.ArgumentParser(prog="dpmBedStatistics", description=__doc__.split("\n\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("case")
     ap.add_argument("-bubbleVoidage", type=float, default=0.8)
@@ -150,40 +193,16 @@ def main():
                                    ("every", a.every, 0, np.inf)):
         if not low < value < high:
             sys.exit("dpmBedStatistics: -%s %g is outside (%g, %g)" % (name, value, low, high))
-    if not os.path.isdir(a.case):
-        sys.exit("dpmBedStatistics: no case directory %s" % a.case)
-    if not os.path.isfile(os.path.join(a.case, "system", "controlDict")) \
-            and not os.path.isdir(os.path.join(a.case, "particles")):
-        sys.exit("dpmBedStatistics: %s is not a dpmFoam2D case (no system/controlDict"
-                 " or particles/)" % a.case)
-
     try:
-        bed = bed_table(a.case, a.bubbleVoidage, a.surfaceVoidage)
-        parts = particle_table(a.case, a.stillSpeed, a.every)
+        bed, parts, out = write_bed_statistics(a.case, a.bubbleVoidage, a.surfaceVoidage,
+                                               a.stillSpeed, a.every)
     except (ff.FieldError, ValueError) as e:
         sys.exit("dpmBedStatistics: %s" % e)
-    if not bed and not parts:
-        sys.exit("dpmBedStatistics: %s has no voidage fields and no particle files" % a.case)
-
-    out = os.path.join(a.case, OUT)
-    os.makedirs(out, exist_ok=True)
-    bedNames = ["Time", "bedHeight", "bubbleFraction", "emulsionVoidage"]
-    write_table(os.path.join(out, "bed.dat"),
-                ["Bed surface, bubbles (cells of voidage > %g) and emulsion, from the "
-                 "voidage fields" % a.bubbleVoidage,
-                 "surfaceVoidage         : %g" % a.surfaceVoidage],
-                bedNames, bed)
-    partNames = ["Time"] + [q + c for c in CLASSES for q in ("speedRms", "still")] + \
-        ["voidage" + c for c in CLASSES]
-    write_table(os.path.join(out, "particles.dat"),
-                ["Particle motion per class (still: speed < %g m/s) and the voidage "
-                 "at the particles" % a.stillSpeed],
-                partNames, parts)
     print("dpmBedStatistics: %d voidage fields, %d particle files -> %s"
           % (len(bed), len(parts), out))
     if a.report:
         mean = {}
-        for names, rows in ((bedNames, bed), (partNames, parts)):
+        for names, rows in ((BED_COLUMNS, bed), (PARTICLE_COLUMNS, parts)):
             a = np.array(rows, float).reshape(-1, len(names))
             for n, column in zip(names[1:], a[:, 1:].T):
                 finite = column[np.isfinite(column)]
@@ -192,5 +211,5 @@ def main():
 
 
 def command():
-    """bin/dpmBedStatistics."""
+    """The console script dpmBedStatistics."""
     main()

@@ -7,6 +7,8 @@ centres and volumes of a case (written once by OpenFOAM's own
 writeCellCentres / writeCellVolumes function objects).
 """
 
+from __future__ import annotations
+
 import os
 import re
 import subprocess
@@ -34,7 +36,7 @@ def _scalar_bytes(text, path):
     return 8
 
 
-def internal_field(path, n_cells=None):
+def internal_field(path: str, n_cells: int | None = None) -> np.ndarray | float:
     """The internal field of a volScalarField ([N]) or volVectorField
     ([N, 3]). A uniform field is expanded to n_cells values, or returned as
     its one value (a float, or an array of 3) when n_cells is None."""
@@ -75,7 +77,7 @@ def internal_field(path, n_cells=None):
     return a.reshape(n, ncomp) if ncomp > 1 else a
 
 
-def time_dirs(case: str) -> "list[tuple[float, str]]":
+def time_dirs(case: str) -> list[tuple[float, str]]:
     """(time, name) of the case's numeric time directories, in time order.
     A case directory that does not exist is refused (FileNotFoundError
     naming it): a mistyped path is not a case without times."""
@@ -85,7 +87,7 @@ def time_dirs(case: str) -> "list[tuple[float, str]]":
                   if TIME_NAME.match(name) and os.path.isdir(os.path.join(case, name)))
 
 
-def cell_geometry(case):
+def cell_geometry(case: str) -> tuple[np.ndarray, np.ndarray]:
     """Cell centres [N, 3] and volumes [N] of the case's mesh. Written by
     OpenFOAM (postProcess -funcs '(writeCellCentres writeCellVolumes)') into
     the first time directory the first time they are asked for."""

@@ -24,6 +24,8 @@ make files of the same layout from arrays (synthetic beds of known
 geometry for the picture tests).
 """
 
+from __future__ import annotations
+
 import math
 import os
 import subprocess
@@ -64,13 +66,13 @@ class ParticleFileError(ValueError):
     """A particle file that HDF5 cannot read, its path in the message."""
 
 
-def time_name(t):
+def time_name(t: float) -> str:
     """The time as OpenFOAM prints it in directory names (general format,
     6 significant digits): 0.01 -> '0.01', 1.5 -> '1.5', 2 -> '2'."""
     return "%.6g" % float(t)
 
 
-def check_case(case):
+def check_case(case: str) -> None:
     """Raise FileNotFoundError naming the path unless case is a dpmFoam2D
     case directory (system/controlDict, particles/ or postProcessing/): a
     mistyped path must not pass, nor be created by the output."""
@@ -83,7 +85,7 @@ def check_case(case):
                                 "particles/ or postProcessing/)" % case)
 
 
-def class_names(case: str) -> "list[str]":
+def class_names(case: str) -> list[str]:
     """The class names of constant/particleProperties in their order (the
     particle files' class indices), or [] when foamDictionary cannot say (no
     such file, or no OpenFOAM). A case directory that does not exist is
@@ -99,7 +101,7 @@ def class_names(case: str) -> "list[str]":
     return out.split()
 
 
-def particles_dir(case):
+def particles_dir(case: str) -> str:
     return os.path.join(case, PARTICLES_DIR)
 
 
@@ -144,7 +146,7 @@ def write_particles(case, t, position, diameter, cls, velocity=None,
     return path
 
 
-def read_particles(path):
+def read_particles(path: str) -> dict[str, np.ndarray | float]:
     """One particle file as a dict: every dataset of FIELDS it holds (numpy
     arrays) plus 'time' (float). A file without one of the datasets the
     solver always writes is refused, naming it; so is a file HDF5 cannot
@@ -166,7 +168,7 @@ def read_particles(path):
     return out
 
 
-def readable(path):
+def readable(path: str) -> str | None:
     """None if path reads as a particle file, else why not (the message)."""
     try:
         read_particles(path)
@@ -175,13 +177,13 @@ def readable(path):
     return None
 
 
-def read(case: str, t: "float | None" = None) -> dict:
+def read(case: str, t: float | None = None) -> dict[str, np.ndarray | float]:
     """The particles of a case at the output time nearest to t (the latest
     if t is None): read_particles of that file."""
     return read_particles(nearest_time(case, t)[1])
 
 
-def list_times(case: str) -> "list[tuple[float, str]]":
+def list_times(case: str) -> list[tuple[float, str]]:
     """[(time, path)] of the particle files of a case, in time order ([] for
     a case without any). The time is read from the file name (as OpenFOAM
     names time directories). A case directory that does not exist is
@@ -198,7 +200,7 @@ def list_times(case: str) -> "list[tuple[float, str]]":
     return sorted(out)
 
 
-def nearest_time(case: str, t: "float | None" = None) -> "tuple[float, str]":
+def nearest_time(case: str, t: float | None = None) -> tuple[float, str]:
     """(time, path) of the particle file nearest to t; the latest if t is
     None. A time that is no finite number is refused (ValueError): no file
     is nearest to nan."""

@@ -26,10 +26,13 @@ Writes postProcessing/riseTime/0/
                  (the 1st, 2nd ... to emerge), for each fraction
 """
 
+from __future__ import annotations
+
 import argparse
 import math
 import os
 import sys
+from typing import Sequence
 
 import numpy as np
 
@@ -39,13 +42,13 @@ from .files import outside_case, replacing
 OUT = os.path.join("postProcessing", "riseTime", "0")
 
 
-def surface_heights(y, in_bed, fractions):
+def surface_heights(y: np.ndarray, in_bed: np.ndarray, fractions: Sequence[float]) -> np.ndarray:
     """The heights below which each fraction of the bed's centres lie."""
     return np.quantile(y[in_bed], fractions) if in_bed.any() else np.full(len(fractions), np.nan)
 
 
-def rise_times(case: str, cls: int, fractions, start: "float | None" = None,
-               label: "str | None" = None) -> "tuple[np.ndarray, np.ndarray, float]":
+def rise_times(case: str, cls: int, fractions: Sequence[float], start: float | None = None,
+               label: str | None = None) -> tuple[np.ndarray, np.ndarray, float]:
     """(ids, times, start): the ids of class cls's particles (sorted) and
     their rise times, an array [particle, fraction] (nan where not risen),
     measured from start (default: the first particle file's time). Each
@@ -213,5 +216,5 @@ def write_tables(out, label, cls, t0, fractions, ids, times):
 
 
 def command():
-    """bin/dpmRiseTime."""
+    """The console script dpmRiseTime."""
     main()

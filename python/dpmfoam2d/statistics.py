@@ -1,14 +1,18 @@
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Comparing the mean of simulated seeds with the mean of measured repeats.
+"""The project's statistics: intervals of means and of their differences,
+equivalence tests, and the spectrum of a record, all on scipy.
 
-Both are samples of a random quantity (a rise time, a bed height): the
+Comparing the mean of simulated seeds with the mean of measured repeats:
+both are samples of a random quantity (a rise time, a bed height): the
 simulation's over random packings, the experiment's over its repeats, with
 different spreads and sizes. Everything here works on the difference of the
 two means with Welch's standard error and the Welch-Satterthwaite degrees
 of freedom (no equal variances assumed), the t quantiles from scipy.stats:
 
+  t_quantile           the two-sided Student-t quantile of a level
   mean_interval        a sample's mean and its two-sided Student-t interval
+  satterthwaite_dof    the degrees of freedom of a sum of variance estimates
   welch_dof            the Welch-Satterthwaite degrees of freedom
   welch_difference     mean(a) - mean(b), its standard error, dof, interval
   tost                 the two one-sided tests of equivalence (Schuirmann
@@ -16,6 +20,8 @@ of freedom (no equal variances assumed), the t quantiles from scipy.stats:
                        undecided
   one_sided            the sign of a difference, a one-sided Welch test
   validation_uncertainty  ASME V&V 20's u_val from the terms that are known
+  spectrum             Welch's power spectral density of a sampled record
+  dominant_frequency   the frequency of its highest peak in a band
 
 Each verdict is a test at a stated level whose bar rises as the samples
 shrink: fewer values widen the interval of the difference, so they can only
@@ -29,7 +35,9 @@ S. Wellek (2010), "Testing Statistical Hypotheses of Equivalence and
 Noninferiority", 2nd ed., CRC Press; B.L. Welch (1947), Biometrika
 34:28-35; F.E. Satterthwaite (1946), Biometrics Bulletin 2:110-114;
 ASME V&V 20-2009, "Standard for Verification and Validation in
-Computational Fluid Dynamics and Heat Transfer".
+Computational Fluid Dynamics and Heat Transfer"; P.D. Welch (1967), "The
+use of fast Fourier transform for the estimation of power spectra", IEEE
+Trans. Audio Electroacoust. 15:70-73.
 """
 
 from __future__ import annotations
@@ -39,7 +47,7 @@ from dataclasses import dataclass
 from typing import Optional, Sequence
 
 import numpy as np
-from scipy import stats
+from scipy import signal, stats
 
 EQUIVALENT = "equivalent"
 NOT_EQUIVALENT = "not equivalent"
@@ -48,6 +56,13 @@ UNDECIDED = "undecided"
 
 def _values(x: Sequence[float]) -> np.ndarray:
     return np.asarray(x, dtype=float).ravel()
+
+
+def t_quantile(level: float, dof):
+    """The quantile t of Student's distribution with dof degrees of freedom
+    that a two-sided interval at `level` reaches: P(|T| <= t) = level
+    (dof may be an array)."""
+    return stats.t.ppf(0.5 + level / 2, dof)
 
 
 def mean_interval(x: Sequence[float], level: float = 0.95) -> tuple[float, float]:
@@ -60,8 +75,21 @@ def mean_interval(x: Sequence[float], level: float = 0.95) -> tuple[float, float
         return math.nan, math.nan
     if n < 2:
         return float(x.mean()), math.nan
-    return float(x.mean()), float(stats.t.ppf(0.5 + level / 2, n - 1) * x.std(ddof=1)
-                                  / math.sqrt(n))
+    return float(x.mean()), float(t_quantile(level, n - 1) * x.std(ddof=1) / math.sqrt(n))
+
+
+def satterthwaite_dof(variances: Sequence[float], dofs: Sequence[float]) -> float:
+    """The degrees of freedom of a sum of independent variance estimates
+    v_i, each with d_i degrees of freedom (Satterthwaite 1946):
+
+        (sum v_i)^2 / sum (v_i^2 / d_i)
+
+    nan when the sum is 0 (no spread: nothing to estimate)."""
+    v = _values(variances)
+    total = float(v.sum())
+    if total == 0:
+        return math.nan
+    return float(total ** 2 / np.sum(v ** 2 / _values(dofs)))
 
 
 def welch_dof(var_a: float, n_a: int, var_b: float, n_b: int) -> float:
@@ -75,10 +103,7 @@ def welch_dof(var_a: float, n_a: int, var_b: float, n_b: int) -> float:
     values."""
     if n_a < 2 or n_b < 2:
         return math.nan
-    qa, qb = var_a / n_a, var_b / n_b
-    if qa + qb == 0:
-        return math.nan
-    return float((qa + qb) ** 2 / (qa ** 2 / (n_a - 1) + qb ** 2 / (n_b - 1)))
+    return satterthwaite_dof([var_a / n_a, var_b / n_b], [n_a - 1, n_b - 1])
 
 
 @dataclass(frozen=True)
@@ -98,7 +123,7 @@ class Difference:
             return math.nan
         if self.standard_error == 0:
             return 0.0
-        return float(stats.t.ppf(0.5 + level / 2, self.dof) * self.standard_error)
+        return float(t_quantile(level, self.dof) * self.standard_error)
 
     def interval(self, level: float) -> tuple[float, float]:
         """The two-sided interval at `level`, (low, high)."""
@@ -230,3 +255,44 @@ def validation_uncertainty(u_D: float, u_input: Optional[float] = None,
         if k not in missing and v < 0:
             raise ValueError("%s = %g: an uncertainty is >= 0" % (k, v))
     return (math.sqrt(sum(v ** 2 for k, v in terms.items() if k not in missing)), missing)
+
+
+# One spectral estimator for every record the project analyses: Welch's
+# averaged Hann periodograms (scipy.signal.welch with its default, periodic
+# Hann window). A caller chooses the segment: short segments average out
+# the noise of a long record, the whole record (the Hann periodogram, the
+# one-segment case) keeps the resolution a short record has.
+MIN_SEGMENT = 8         # samples: a shorter segment shows no peak worth naming
+
+
+def spectrum(x: Sequence[float], rate: float, segment: Optional[float] = None,
+             step: Optional[float] = None) -> tuple[np.ndarray, np.ndarray]:
+    """Welch's power spectral density of the record x sampled at `rate`
+    (Hz): Hann-windowed segments of `segment` s (default the whole record)
+    overlapping by half, each less its mean, their periodograms averaged
+    (density scaling: units of x^2/Hz). step (Hz): each segment zero-padded
+    so that the frequencies lie step apart, a finer grid to place a peak on
+    (the resolution stays 1/segment). Returns (frequencies, psd)."""
+    x = _values(x)
+    nperseg = len(x) if segment is None else min(len(x), int(round(segment * rate)))
+    nfft = nperseg if step is None else max(nperseg, int(round(rate / step)))
+    return signal.welch(x, fs=rate, window="hann", nperseg=nperseg,
+                        noverlap=nperseg // 2, nfft=nfft, detrend="constant")
+
+
+def dominant_frequency(x: Sequence[float], rate: float, segment: Optional[float] = None,
+                       lowest: float = 0.0, step: Optional[float] = None
+                       ) -> tuple[float, float]:
+    """(frequency, resolution) of the highest peak of spectrum(x, rate,
+    segment, step) at or above `lowest` Hz (never the mean, f = 0); the
+    resolution is 1/segment, the width of a segment's bin. (nan, nan) for a
+    segment of fewer than MIN_SEGMENT samples or an empty band."""
+    x = _values(x)
+    nperseg = len(x) if segment is None else min(len(x), int(round(segment * rate)))
+    if nperseg < MIN_SEGMENT:
+        return math.nan, math.nan
+    f, psd = spectrum(x, rate, segment, step)
+    band = (f > 0) & (f >= lowest - 1e-9)
+    if not band.any():
+        return math.nan, math.nan
+    return float(f[band][np.argmax(psd[band])]), rate / nperseg

@@ -10,6 +10,8 @@ laceyIndex.dat    Time M ... (M: Lacey's index of the whole bed)
 segregation.dat   Time ... vertical horizontal hSmall hLarge rSmall rLarge
 """
 
+from __future__ import annotations
+
 import csv
 import os
 import sys
@@ -19,7 +21,7 @@ import numpy as np
 from .fields import TIME_NAME
 from .particles import check_case
 
-def read_dat(path: str) -> "dict[str, np.ndarray]":
+def read_dat(path: str) -> dict[str, np.ndarray]:
     """Columns of a whitespace table (laceyIndex.dat, segregation.dat):
     dict name -> numpy array. The column names are the last '#' line before
     the first row of numbers (OpenFOAM's writeFile may put other comment
@@ -121,7 +123,8 @@ def _join(tables):
     return out
 
 
-def read_postprocessing(case, name, fname, postprocess=False, quiet=False):
+def read_postprocessing(case: str, name: str, fname: str, postprocess: bool = False,
+                        quiet: bool = False) -> dict[str, np.ndarray] | None:
     """A function object's table over all its start-time directories,
     <case>/postProcessing/<name>/<startTime>/<fname>, joined in time order
     into strictly increasing times: rows of an earlier run at or after a
@@ -184,7 +187,8 @@ def read_postprocessing(case, name, fname, postprocess=False, quiet=False):
     return _join([(start, path, table) for start, _, path, table in runs])
 
 
-def lacey(case, name="laceyIndex", postprocess=False):
+def lacey(case: str, name: str = "laceyIndex",
+          postprocess: bool = False) -> dict[str, np.ndarray] | None:
     """M(t) of a case: the columns of laceyIndex.dat (Time, M, ...) of the
     function object name, joined over the run's restarts; None if the case
     has none. A path that is not a case is refused (FileNotFoundError)."""
@@ -192,7 +196,8 @@ def lacey(case, name="laceyIndex", postprocess=False):
     return read_postprocessing(case, name, "laceyIndex.dat", postprocess)
 
 
-def segregation(case, name="laceyIndex", postprocess=False):
+def segregation(case: str, name: str = "laceyIndex",
+                postprocess: bool = False) -> dict[str, np.ndarray] | None:
     """The vertical and horizontal segregation indices and the classes'
     mean heights and distances from the centre line over time
     (segregation.dat); None if the case has none. A path that is not a case
@@ -201,7 +206,7 @@ def segregation(case, name="laceyIndex", postprocess=False):
     return read_postprocessing(case, name, "segregation.dat", postprocess)
 
 
-def study_table(study_dir: str, name: str = "summary") -> "dict[str, np.ndarray] | None":
+def study_table(study_dir: str, name: str = "summary") -> dict[str, np.ndarray] | None:
     """A table of a study's results, <study_dir>/results/<name>.csv
     (summary, windows, ensemble, ensembleWindows, findings, verdicts), as a
     dict column -> numpy array: numbers where every value of the column is

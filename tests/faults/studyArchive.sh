@@ -1,7 +1,7 @@
 #!/bin/bash
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
-# dpmStudy -export and -import against hostile or broken archives and
+# dpmStudy export and import against hostile or broken archives and
 # studies. Nothing is run: a study "src" holds one summary case made by
 # hand (w 0.5 at 1 bar, seed 1: the template's dictionaries, an
 # archivedCase, a log head and small tables); its export is the base that
@@ -11,17 +11,17 @@
 #      summary study ('..', an absolute path, another folder): refused
 #      naming the member, or (a dictionary) imported with this process's
 #      modes; a refused import changes nothing and writes nothing outside;
-#   2. -export through a symbolic link at its archive's name or at the old
+#   2. export through a symbolic link at its archive's name or at the old
 #      <archive>.partial: the files the links point to stay as they were;
 #   3. a symbolic link inside a case (a dictionary, the log, a table
-#      folder): -export and -import of the study directory refuse it,
+#      folder): export and import of the study directory refuse it,
 #      naming it, and carry nothing of the file it points to;
 #   4. a summary case without its log, with time nan or without its time
 #      line, with a time or wSmall that is no number: refused naming the
 #      member and the entry (no traceback);
 #   5. an import onto a case name that is a dangling link: refused naming
 #      it, nothing left behind;
-#   6. -import with pictures on, and -results of the merged study: finish,
+#   6. import with pictures on, and results of the merged study: finish,
 #      the summary case's snapshot left out with a note;
 #   7. an import refused for another dictionary names the differing entry,
 #      not the file's banner.
@@ -38,9 +38,9 @@ summaryCaseDictionaries src $case1 && markSummaryCase src/$case1 || fail "the su
 mkdir -p src/$case1/postProcessing/bedStatistics/0
 printf '# Time bedHeight\n0.05 0.1\n' > src/$case1/postProcessing/bedStatistics/0/bed.dat
 
-dpmStudy src -export base.tar.gz > log.base 2>&1 || { cat log.base; fail "-export of src"; }
+dpmStudy export src base.tar.gz > log.base 2>&1 || { cat log.base; fail "export of src"; }
 grep -q "export: 1 finished cases of src -> base.tar.gz" log.base || { cat log.base; fail "the export's line"; }
-dpmStudy clean -import base.tar.gz -noPictures > log.clean 2>&1 || { cat log.clean; fail "-import of base.tar.gz"; }
+dpmStudy import clean base.tar.gz -noPictures > log.clean 2>&1 || { cat log.clean; fail "import of base.tar.gz"; }
 [ -f clean/$case1/constant/archivedCase ] || fail "no summary case imported from base.tar.gz"
 echo "ok   the base archive exports and imports"
 
@@ -90,14 +90,14 @@ with tarfile.open(out, "w:gz", compresslevel=1) as tar:
 EOF
 }
 
-# refused <archive> <pattern> <what>: -import of archive into a copy of
+# refused <archive> <pattern> <what>: import of archive into a copy of
 # clean fails with a message matching pattern, no traceback, the study as
 # it was, nothing of it left in the study
 refused()
 {
     local archive="$1" pattern="$2" what="$3"
     rm -rf D && cp -a clean D
-    dpmStudy D -import "$archive" -noPictures > log.refused 2>&1 \
+    dpmStudy import D "$archive" -noPictures > log.refused 2>&1 \
         && { cat log.refused; fail "$what: imported"; }
     noTraceback log.refused "$what"
     grep -qE "$pattern" log.refused || { cat log.refused; fail "$what: no message '$pattern'"; }
@@ -113,7 +113,7 @@ craft modes.tar.gz "for e in members:
     if e[0].name.endswith('constant/caseSettings'): e[0].mode = 0o666
     if e[0].isdir(): e[0].mode = 0o777
 add('$s/constant/sh', b'#!/bin/sh\n', mode=0o6755)"
-dpmStudy M -import modes.tar.gz -noPictures > log.modes 2>&1 || { cat log.modes; fail "-import of modes.tar.gz"; }
+dpmStudy import M modes.tar.gz -noPictures > log.modes 2>&1 || { cat log.modes; fail "import of modes.tar.gz"; }
 [ -f M/$case1/constant/sh ] || fail "the archive's dictionary constant/sh was not imported"
 bad=$(find M \( -perm /6000 -o -perm -0002 \) ! -type l)
 [ -z "$bad" ] || { ls -ld $bad; fail "setuid, setgid or world-writable files imported: $bad"; }
@@ -144,18 +144,18 @@ refused absolute.tar.gz "member $workDir/absolute is no part of a study archive"
 craft fifo.tar.gz "add('$s/constant/fifo', kind=tarfile.FIFOTYPE)"
 refused fifo.tar.gz "member $s/constant/fifo is neither a file nor a directory" "a FIFO"
 
-echo "2. -export through a symbolic link"
+echo "2. export through a symbolic link"
 echo precious > precious1 && echo precious > precious2
 ln -s "$PWD/precious1" out.tar.gz.partial
 ln -s "$PWD/precious2" linked.tar.gz
 for archive in out.tar.gz linked.tar.gz
 do
-    dpmStudy src -export $archive > log.export 2>&1 || { cat log.export; fail "-export $archive"; }
+    dpmStudy export src $archive > log.export 2>&1 || { cat log.export; fail "export $archive"; }
     [ -f $archive ] && [ ! -L $archive ] || fail "$archive is not a file of its own"
     tar -tzf $archive > /dev/null || fail "$archive is no archive"
 done
-[ "$(cat precious1)" = precious ] || fail "-export wrote through the link out.tar.gz.partial"
-[ "$(cat precious2)" = precious ] || fail "-export wrote through the link at its archive's name"
+[ "$(cat precious1)" = precious ] || fail "export wrote through the link out.tar.gz.partial"
+[ "$(cat precious2)" = precious ] || fail "export wrote through the link at its archive's name"
 [ -z "$(ls -A | grep -E '^\.(out|linked)\.tar\.gz')" ] || fail "temporary files left: $(ls -A | grep tar.gz)"
 echo "ok   the files links at the archive's name and at <archive>.partial point to are unchanged"
 
@@ -175,14 +175,14 @@ do
     else
         ln -s "$PWD/secret" L$n/$case1/$link
     fi
-    dpmStudy L$n -export L$n.tar.gz > log.exportL$n 2>&1 && fail "-export of a case with a linked $link"
-    noTraceback log.exportL$n "-export, a linked $link"
-    grep -q "L$n/$case1/$link is a symbolic link" log.exportL$n || { cat log.exportL$n; fail "-export: no message naming the link $link"; }
-    [ ! -e L$n.tar.gz ] || fail "-export of a case with a linked $link wrote an archive"
-    dpmStudy I$n -import L$n -noPictures > log.importL$n 2>&1 && fail "-import of a case with a linked $link"
-    noTraceback log.importL$n "-import, a linked $link"
-    grep -q "L$n/$case1/$link is a symbolic link" log.importL$n || { cat log.importL$n; fail "-import: no message naming the link $link"; }
-    ! grep -rq SECRET I$n 2>/dev/null || fail "-import carried the file the link $link points to"
+    dpmStudy export L$n L$n.tar.gz > log.exportL$n 2>&1 && fail "export of a case with a linked $link"
+    noTraceback log.exportL$n "export, a linked $link"
+    grep -q "L$n/$case1/$link is a symbolic link" log.exportL$n || { cat log.exportL$n; fail "export: no message naming the link $link"; }
+    [ ! -e L$n.tar.gz ] || fail "export of a case with a linked $link wrote an archive"
+    dpmStudy import I$n L$n -noPictures > log.importL$n 2>&1 && fail "import of a case with a linked $link"
+    noTraceback log.importL$n "import, a linked $link"
+    grep -q "L$n/$case1/$link is a symbolic link" log.importL$n || { cat log.importL$n; fail "import: no message naming the link $link"; }
+    ! grep -rq SECRET I$n 2>/dev/null || fail "import carried the file the link $link points to"
     echo "ok   $link: $(grep -m1 "is a symbolic link" log.importL$n | sed 's/^ *//' | cut -c1-200)"
 done
 
@@ -204,7 +204,7 @@ refused wabc.tar.gz "wabc.tar.gz: $s/constant/caseSettings: wSmall 'abc' is not 
 echo "5. an import onto a case name that is a dangling link"
 craft seed2.tar.gz "rename('$s', 'src/w0.50_1bar_seed2')"
 rm -rf D && cp -a clean D && ln -s "$PWD/nowhere" D/w0.50_1bar_seed2
-dpmStudy D -import seed2.tar.gz -noPictures > log.dangling 2>&1 && { cat log.dangling; fail "imported onto a dangling link"; }
+dpmStudy import D seed2.tar.gz -noPictures > log.dangling 2>&1 && { cat log.dangling; fail "imported onto a dangling link"; }
 noTraceback log.dangling "a dangling link"
 grep -q "D/w0.50_1bar_seed2 is a symbolic link (to $PWD/nowhere), no case of the study: remove or rename it" log.dangling \
     || { cat log.dangling; fail "no message naming the dangling link"; }
@@ -214,12 +214,12 @@ echo "ok   $(grep -m1 "is a symbolic link" log.dangling | sed 's/^ *//' | cut -c
 
 echo "6. pictures of a study with summary cases"
 rm -rf P && cp -a clean P
-dpmStudy P -import seed2.tar.gz > log.pictures 2>&1 || { cat log.pictures; fail "-import with pictures"; }
-noTraceback log.pictures "-import with pictures"
+dpmStudy import P seed2.tar.gz > log.pictures 2>&1 || { cat log.pictures; fail "import with pictures"; }
+noTraceback log.pictures "import with pictures"
 grep -q "results: no snapshot of $case1: a summary case (imported), without particle files" log.pictures \
     || { cat log.pictures; fail "no note on the summary case's snapshot"; }
-dpmStudy P -results > log.results 2>&1 || { cat log.results; fail "-results of a merged study"; }
-echo "ok   -import with pictures and -results: $(grep -m1 "no snapshot" log.results)"
+dpmStudy results P > log.results 2>&1 || { cat log.results; fail "results of a merged study"; }
+echo "ok   import with pictures and results: $(grep -m1 "no snapshot" log.results)"
 
 echo "7. another dictionary: the differing entry named, not the banner"
 craft dictionary.tar.gz "rename('$s', 'src/w0.50_1bar_seed2')

@@ -26,6 +26,7 @@
 # run naming the dictionary, the entry and what is allowed.
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
 . "$testsDir/solver/testFunctions"
+. "$testsDir/functionObjects/testFunctions"
 export WM_PROJECT_SITE="${WM_PROJECT_SITE:-$DPMFOAM2D_PROJECT}"
 
 makeCase "$workDir/case"
@@ -144,37 +145,11 @@ grep -q "^intrudersRisen counted: t = 0.15, .* risen so far" log.dpmFoam2D \
     || fail "the restart does not sample its start's particle file"
 check . 0.15 || fail "the restarted run's rows or end differ (above)"
 
-# expectFailure <name> <entries> <pattern>...: the run fails, its log holds each pattern
-expectFailure()
-{
-    local name="$1" entries="$2"
-    shift 2
-    rm -rf postProcessing 0.* [1-9]*
-    cp controlDict.base system/controlDict
-    setEntry system/controlDict endTime 0.02
-    cat >>system/controlDict <<EOF2
-functions
-{
-    risen
-    {
-        #includeEtc "caseDicts/postProcessing/segregation/intrudersRisen"
-        $entries
-    }
-}
-EOF2
-    dpmFoam2D >"log.$name" 2>&1 && fail "$name: dpmFoam2D ran; expected an error"
-    for pattern in "$@"
-    do
-        grep -q -- "$pattern" "log.$name" \
-            || { sed -n '/FOAM FATAL/,$p' "log.$name"; fail "$name: no '$pattern' in log.$name"; }
-    done
-    echo "  $name: $(grep -m1 -A3 'FOAM FATAL' "log.$name" | sed -n 2p)"
-}
-expectFailure fraction "class large; fraction 1;" \
+expectFailure fraction segregation/intrudersRisen risen "class large; fraction 1;" \
     "Entry 'fraction' = 1" "controlDict.functions.risen" "allowed: .* in (0, 1)"
-expectFailure class "class intruder;" \
+expectFailure class segregation/intrudersRisen risen "class intruder;" \
     "Entry 'class' = intruder" "not a class of cloud 'particles'" "(small large)"
-expectFailure executeControl "class large; executeControl timeStep; executeInterval 5;" \
+expectFailure executeControl segregation/intrudersRisen risen "class large; executeControl timeStep; executeInterval 5;" \
     "executeControl" "type intrudersRisen"
 
 pass "intrudersRisen samples the particle files as numpy does, ends the run when all have risen, and restarts knowing who had"

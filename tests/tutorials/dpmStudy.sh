@@ -1,7 +1,7 @@
 #!/bin/bash
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
-# bin/dpmStudy on a reduced study: w_small 0.5 at 1 and 64 bar with 5 % of
+# dpmStudy on a reduced study: w_small 0.5 at 1 and 64 bar with 5 % of
 # Table 3's particles (331 small + 72 large), 0.1 s of settling, 0.1 s of
 # gas, restart states every 0.02 s, two cases at once.
 # Expected:
@@ -17,10 +17,10 @@
 #      statistics of dpmBedStatistics), windows.csv (M in windows of -mean
 #      s, checked against the function object's rows), the M(t) figures per pressure and
 #      per mass fraction, indices.png, hydrodynamics.png, snapshots.png;
-#   4. a third run finds everything finished and runs nothing; -status
+#   4. a third run finds everything finished and runs nothing; status
 #      shows the bed and both cases done at 0.1 s, and takes a running
 #      case's time and ETA from the last Progress line of a log read from
-#      its end (checked on a 4.5-MB log); two -results at once
+#      its end (checked on a 4.5-MB log); two results at once
 #      (two copies of a work queue finishing together) both succeed, the
 #      second waiting for the first, and make the same summary.csv;
 #   5. -excessVelocity 0.2 gives a case with U0 = Umf + 0.2 m/s;
@@ -42,14 +42,14 @@ cd "$workDir" || fail "cd"
 
 studyArgs=(-w 0.5 -p 1 64 -j 2 -scale 0.05 -settleTime 0.1
            -endTime 0.1 -writeInterval 0.02 -mean 0.05 -interval 2)
-study() { dpmStudy study "${studyArgs[@]}" "$@"; }
+study() { dpmStudy run study "${studyArgs[@]}" "$@"; }
 case1=study/w0.50_1bar
 
 echo "1. start, then kill while $case1 runs"
 # dpmStudy itself in the background (not a function's subshell), so that
 # the signal reaches it
 # (its cases share the cores: it makes their OpenMP threads wait passively)
-env -u OMP_WAIT_POLICY dpmStudy study "${studyArgs[@]}" > log.study1 2>&1 &
+env -u OMP_WAIT_POLICY dpmStudy run study "${studyArgs[@]}" > log.study1 2>&1 &
 pid=$!
 for i in $(seq 1 600)
 do
@@ -144,8 +144,8 @@ study -noPictures > log.study3 2>&1 || fail "dpmStudy (third run)"
 cp study/results/summary.csv summary.before
 # the second is started while the first holds the lock (held for the test by flock)
 exec 8>study/results/.lock && flock 8 || fail "flock"
-dpmStudy study -results -noPictures -mean 0.05 > log.results1 2>&1 & first=$!
-dpmStudy study -results -noPictures -mean 0.05 > log.results2 2>&1 & second=$!
+dpmStudy results study -noPictures -mean 0.05 > log.results1 2>&1 & first=$!
+dpmStudy results study -noPictures -mean 0.05 > log.results2 2>&1 & second=$!
 # released once both wait (or after 60 s), however slowly they start
 for i in $(seq 1 300)
 do
@@ -153,22 +153,22 @@ do
     sleep 0.2
 done
 flock -u 8; exec 8>&-
-wait $first || { cat log.results1; fail "the first of two -results failed"; }
-wait $second || { cat log.results2; fail "the second of two -results failed"; }
+wait $first || { cat log.results1; fail "the first of two results failed"; }
+wait $second || { cat log.results2; fail "the second of two results failed"; }
 [ $(cat log.results1 log.results2 | grep -c "^results: waiting for another dpmStudy") = 2 ] \
-    || fail "-results did not wait for the lock's holder"
-cmp -s summary.before study/results/summary.csv || fail "two -results at once changed summary.csv"
+    || fail "results did not wait for the lock's holder"
+cmp -s summary.before study/results/summary.csv || fail "two results at once changed summary.csv"
 [ $(grep -c "finished (t = 0.1 s)" log.study3) = 2 ] || { cat log.study3; fail "third run ran something"; }
-dpmStudy study -status > log.status 2>&1 || { cat log.status; fail "dpmStudy -status"; }
+dpmStudy status study > log.status 2>&1 || { cat log.status; fail "dpmStudy status"; }
 cat log.status
-grep -q "^beds/w0.50 *done" log.status || fail "-status: the bed not done"
+grep -q "^beds/w0.50 *done" log.status || fail "status: the bed not done"
 for c in w0.50_1bar w0.50_64bar
 do
-    grep -q "^$c *done *- *0.1 of 0.1 s$" log.status || fail "-status: $c not done at 0.1 s"
+    grep -q "^$c *done *- *0.1 of 0.1 s$" log.status || fail "status: $c not done at 0.1 s"
 done
 # A running case's time and ETA come from the last Progress line, read from
 # the log's end (a 60-s case's log holds ~200 MB)
-py - <<PY || fail "-status: the last Progress line of a log"
+py - <<PY || fail "status: the last Progress line of a log"
 import sys
 from dpmfoam2d.study.slurm import last_progress
 with open("fake.log", "w") as f:
@@ -181,7 +181,7 @@ open("none.log", "w").write("Time = 1\n" * 10)
 assert last_progress("none.log") == (None, None), last_progress("none.log")
 PY
 echo "5. a variant study at a given U0 - Umf"
-dpmStudy variant -w 0.5 -p 64 -j 1 -scale 0.05 -settleTime 0.1 -endTime 0.02 \
+dpmStudy run variant -w 0.5 -p 64 -j 1 -scale 0.05 -settleTime 0.1 -endTime 0.02 \
     -writeInterval 0.02 -mean 0.01 -excessVelocity 0.2 -noPictures > log.variant 2>&1 \
     || { cat log.variant; fail "dpmStudy -excessVelocity"; }
 grep -q "(set by U0 - Umf 0.2 m/s)" variant/w0.50_64bar/log.dpmFoam2D \
@@ -195,7 +195,7 @@ PY
 echo "6. seeds"
 short=(-w 0.5 -p 64 -scale 0.05 -settleTime 0.1 -endTime 0.02 -writeInterval 0.02
        -mean 0.01 -noPictures)
-dpmStudy seeds "${short[@]}" -seeds 2 -j 2 > log.seeds 2>&1 || { cat log.seeds; fail "dpmStudy -seeds 2"; }
+dpmStudy run seeds "${short[@]}" -seeds 2 -j 2 > log.seeds 2>&1 || { cat log.seeds; fail "dpmStudy -seeds 2"; }
 for k in 1 2
 do
     grep -q "at random in .* (seed $k)" seeds/beds/w0.50_seed$k/log.dpmPackBed \
@@ -212,21 +212,21 @@ assert len(r) == 1 and r[0]["n"] == "2" and r[0]["seeds"] == "1 2", r
 PY
 
 echo "7. variants"
-dpmStudy variants "${short[@]}" -j 1 -variant upwind > log.variants 2>&1 \
+dpmStudy run variants "${short[@]}" -j 1 -variant upwind > log.variants 2>&1 \
     || { cat log.variants; fail "dpmStudy -variant upwind"; }
 vcase=variants/w0.50_64bar_upwind
 grep -q "div(voidagePhi,U) *Gauss upwind;" $vcase/system/fvSchemes || fail "upwind not applied"
 head -1 $vcase/constant/variant | grep -q "^# variant upwind$" || fail "no record of the variant"
 grep -q "^## upwind" variants/results/variants.md || fail "results/variants.md lacks upwind"
 grep -q ",upwind," variants/results/summary.csv || fail "summary.csv lacks the variant"
-dpmStudy rerun "${short[@]}" -j 1 -variant "$PWD/$vcase/constant/variant" > log.rerun 2>&1 \
+dpmStudy run rerun "${short[@]}" -j 1 -variant "$PWD/$vcase/constant/variant" > log.rerun 2>&1 \
     || { cat log.rerun; fail "rerun from the record"; }
 diff -r -q $vcase/system rerun/w0.50_64bar_upwind/system || fail "the rerun's dictionaries differ"
 cmp $vcase/constant/variant rerun/w0.50_64bar_upwind/constant/variant || fail "the rerun's record differs"
 grep -q '/beds/w0.50/constant/packedBed.state' $vcase/constant/packedBed \
     || fail "the gas-only variant upwind did not start from the template's bed"
 mkdir -p changed && echo "constant/particleProperties contact/frictionParticle 0.3" > changed/friction
-dpmStudy variants "${short[@]}" -j 1 -variant "$PWD/changed/friction" > log.friction 2>&1 \
+dpmStudy run variants "${short[@]}" -j 1 -variant "$PWD/changed/friction" > log.friction 2>&1 \
     || { cat log.friction; fail "dpmStudy -variant friction"; }
 fbed=variants/beds/w0.50_friction
 [ -f $fbed/constant/packedBed.state ] || fail "a variant of the particles packed no bed of its own"
@@ -238,14 +238,14 @@ grep -q "Particles: packing" variants/w0.50_64bar_friction/log.dpmFoam2D \
     && fail "the variant's case packed a bed instead of loading its own (an edit of particleProperties dropped the packedBed include)"
 sed 's/Gauss upwind/Gauss linearUpwind grad(U)/' \
     "$DPMFOAM2D_PROJECT/tutorials/paperStudy/variants/upwind" > changed/upwind
-dpmStudy variants "${short[@]}" -variant "$PWD/changed/upwind" > log.changed 2>&1 \
+dpmStudy run variants "${short[@]}" -variant "$PWD/changed/upwind" > log.changed 2>&1 \
     && fail "a changed variant file was accepted"
 grep -q "the edits differ" log.changed || { cat log.changed; fail "no message on a changed variant"; }
-dpmStudy variants "${short[@]}" -variant upwnid > log.unknown 2>&1 && fail "an unknown variant ran"
+dpmStudy run variants "${short[@]}" -variant upwnid > log.unknown 2>&1 && fail "an unknown variant ran"
 grep -q "no variant 'upwnid' .*the template's variants: .*upwind" log.unknown \
     || { cat log.unknown; fail "no message on an unknown variant"; }
 echo "system/fvSchemes divSchemes/div(phi,U) Gauss upwind" > changed/wrongEntry
-dpmStudy wrong "${short[@]}" -variant "$PWD/changed/wrongEntry" > log.wrong 2>&1 && fail "a wrong entry ran"
+dpmStudy run wrong "${short[@]}" -variant "$PWD/changed/wrongEntry" > log.wrong 2>&1 && fail "a wrong entry ran"
 grep -q "has no entry 'divSchemes/div(phi,U)'" log.wrong || { cat log.wrong; fail "no message on a wrong entry"; }
 echo "8. a case another dpmStudy started meanwhile is skipped when its turn comes"
 ov=(-w 0.5 -scale 0.05 -settleTime 0.1 -endTime 0.04 -writeInterval 0.02 -mean 0.02
@@ -258,11 +258,11 @@ waitSolver()
     [ -n "$s" ] || fail "no solver started in $1"
     echo $s
 }
-dpmStudy overlap "${ov[@]}" -p 1 64 > log.overlapA 2>&1 &
+dpmStudy run overlap "${ov[@]}" -p 1 64 > log.overlapA 2>&1 &
 pidA=$!
 soA="$(waitSolver overlap/w0.50_1bar)"
 kill -STOP $soA                         # holds the first study at its 1-bar case
-dpmStudy overlap "${ov[@]}" -p 64 > log.overlapB 2>&1 &
+dpmStudy run overlap "${ov[@]}" -p 64 > log.overlapB 2>&1 &
 pidB=$!
 soB="$(waitSolver overlap/w0.50_64bar)"
 kill -STOP $soB                         # the 64-bar case is running, in the second study

@@ -3,7 +3,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # dpmStudy's ensemble arithmetic on synthetic tables with known answers (no
 # solver run): a study directory of hand-made cases whose laceyIndex and
-# segregation tables hold constants, summed up by `dpmStudy -results`.
+# segregation tables hold constants, summed up by `dpmStudy results`.
 # Expected, against Student-t quantiles from a printed table (NIST/SEMATECH
 # e-Handbook, Table of Upper Critical Values of the t Distribution:
 # t(0.975; 2) = 4.303, t(0.975; 4) = 2.776; more digits: 4.302653, 2.776445):
@@ -60,7 +60,7 @@ for k, m75 in enumerate((0.6, 0.62, 0.64), 1):     # a variant over three seeds
     case("w0.25_1bar_drag_seed%d" % k, 0.25, 1, k, 0.5, variant="drag")
     case("w0.75_1bar_drag_seed%d" % k, 0.75, 1, k, m75, variant="drag")
 PY
-dpmStudy study -results -noPictures -mean 1 > log.results 2>&1 || { cat log.results; fail "dpmStudy -results"; }
+dpmStudy results study -noPictures -mean 1 > log.results 2>&1 || { cat log.results; fail "dpmStudy results"; }
 cat log.results
 cat study/results/findings.md
 
@@ -134,7 +134,7 @@ done
 # limits -w (with its note), its findings are the ones findings.csv tests
 # (here one: w 0.75 - w 0.25 of the final M at each pressure, sign -: the
 # hand-made values give 0.22 - 0.5 = -0.28 at 1 bar, as above), and the
-# study directory's copy of a studyDict is the one -results follows
+# study directory's copy of a studyDict is the one results follows
 cp -r "$testsDir/../tutorials/paperStudy" mine || fail "copy the template"
 cat > mine/studyDict <<'DICT'
 massFractions { values (0.25 0.75); allowed (0.25 0.75); allowedNote "my bed has 0.25 and 0.75"; }
@@ -151,12 +151,12 @@ findings
 }
 DICT
 mkdir mystudy && cp -r study/w0.25_1bar_seed? study/w0.75_1bar_seed? mystudy/ || fail "copy the cases"
-dpmStudy mystudy -w 0.5 -template mine > log.mineW 2>&1 && fail "-w 0.5 ran against the template's allowed values"
+dpmStudy run mystudy -w 0.5 -template mine > log.mineW 2>&1 && fail "-w 0.5 ran against the template's allowed values"
 grep -q "error: -w 0.5: my bed has 0.25 and 0.75" log.mineW || { cat log.mineW; fail "no message with the template's note"; }
 # the study directory's copy (as dpmStudy makes it) wins over -template's default
 cp mine/studyDict mystudy/studyDict
-dpmStudy mystudy -results -noPictures -mean 1 > log.mine 2>&1 \
-    || { cat log.mine; fail "dpmStudy -results on a study with its own studyDict"; }
+dpmStudy results mystudy -noPictures -mean 1 > log.mine 2>&1 \
+    || { cat log.mine; fail "dpmStudy results on a study with its own studyDict"; }
 py - <<'PY' || fail "the template's own findings"
 import csv
 rows = list(csv.DictReader(open("mystudy/results/findings.csv")))

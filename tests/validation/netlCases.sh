@@ -4,7 +4,9 @@
 # The cases of benchmarks/netlSegregationValidation (caseFunctions) against
 # the experiment of LaMarche et al. (2022): each condition's U0, glass count
 # (its bed mass over one bead's, 2522 kg/m3 and 3.101 mm), intruders, their
-# diameter (large 9.43 mm, small 3.155 mm) and seed, the held-out five too;
+# diameter (large 9.43 mm, small 3.155 mm), placement (one at the centre
+# of the floor, as the experiment placed it; more at random) and seed, the
+# held-out five too;
 # a variant's entries and its shift ('add': U0plus0.10 gives 1.93 and
 # 2.234 m/s); variants joined by '+'; a variant's file outside the case
 # refused by makeCase itself, naming the line, and no half-made case left;
@@ -31,9 +33,19 @@ do
     same "$(value $c U0 constant/gasProperties)" "$U0" || fail "$c: U0 $(value $c U0 constant/gasProperties), not $U0"
     [ "$(value $c classes.glass.count constant/particleProperties)" = "$(beads "$mass")" ] \
         || fail "$c: glass count not $(beads "$mass")"
+    # one at the centre of the column's 38.1-mm floor, a radius up; more at random
     [ "$(value $c classes.intruder.count constant/particleProperties)" = "$intruders" ] \
-        && [ "$(value $c initialBed.place.intruder.random constant/particleProperties)" = "$intruders" ] \
-        || fail "$c: not $intruders intruders placed at random"
+        || fail "$c: not $intruders intruders"
+    if [ "$intruders" = 1 ]
+    then
+        placed=$(value $c initialBed.place.intruder.positions constant/particleProperties | tr -d '()')
+        read -r x y z <<<"$placed"
+        same "$x" 0.01905 && same "$y" 0.004715 && same "$z" 0.01905 \
+            || fail "$c: the intruder at ($placed), not the floor's centre (0.01905 0.004715 0.01905)"
+    else
+        [ "$(value $c initialBed.place.intruder.random constant/particleProperties)" = "$intruders" ] \
+            || fail "$c: not $intruders intruders placed at random"
+    fi
     same "$(value $c classes.intruder.diameter constant/particleProperties)" "$diameter" \
         || fail "$c: intruders of $(value $c classes.intruder.diameter constant/particleProperties) m, not $diameter"
     [ "$(value $c initialBed.seed constant/particleProperties)" = 3 ] || fail "$c: seed"

@@ -11,6 +11,7 @@
 # formulas (Welch-Satterthwaite by hand, quantiles from scipy.stats.t).
 # Checked: equal means met; 1.5 margins apart not met; 1.8 s apart undecided;
 # a censored seed not met when even the bound lies above the margin,
+# censored where its run ended (a bed at rest ends it before its end time),
 # undecided otherwise; the same seeds as a met condition, but 3, too few
 # (no verdict); the trends met, the reverse shown (not met), undecided
 # with a censored seed on the side that could undo it; V&V 20's u_val with
@@ -42,11 +43,19 @@ table("experiment/U214_M177_4L.txt", repeats(5, 6, 7, 8))
 table("experiment/U214_M177_2L.txt", repeats(5, 6))
 table("experiment/U214_M177_2S.txt", repeats(9, 10))
 table("experiment/U183_M177_4L.txt", repeats(8, 9, 10, 11))
-def seed(run, name, end, rows):
-    """rows: [t(q 0.95), t(0.99), t(0.999)] for each rank, as dpmRiseTime writes them."""
+def seed(run, name, end, rows, rest=None):
+    """rows: [t(q 0.95), t(0.99), t(0.999)] for each rank, as dpmRiseTime writes them;
+    the run ended at its end time, or at rest (the bedAtRest line in its log)."""
     os.makedirs(os.path.join(run, name, "system"))
     with open(os.path.join(run, name, "system", "controlDict"), "w") as f:
         f.write("startTime 0;\nendTime         %g;\n" % end)
+    for t in ("0", "%g" % ((rest or end) / 2), "%g" % (rest or end)):
+        os.makedirs(os.path.join(run, name, t), exist_ok=True)
+    if rest:
+        with open(os.path.join(run, name, "log.dpmFoam2D"), "w") as f:
+            f.write("bedAtRest bedAtRest: the bed has been at rest (its speed below 0.01 m/s)"
+                    " since t = %g, for 2 s by t = %g; ending the run after one more step\n"
+                    % (rest - 2, rest))
     out = os.path.join(run, name, "postProcessing", "riseTime", "0")
     os.makedirs(out)
     with open(os.path.join(out, "riseOrder.dat"), "w") as f:
@@ -77,12 +86,13 @@ with open("run/uncertainty/U183_M227_1L.dat", "w") as f:
 for i, p in enumerate((-1, 0, 1)):
     seed("fewSeeds", "U183_M177_1L_seed%d" % (i + 1), 24, bracket(8 + 0.5 * p))
     seed("fewSeeds", "U183_M227_1L_seed%d" % (i + 1), 36, bracket(15 + 0.5 * p))
-# censored: the heavier bed's 8th seed not risen by a short end time (9 s),
-# the others 3 s early: the reverse of the trend shown, but on a bound
+# censored: the heavier bed's 8th seed not risen when its bed came to rest
+# at 9 s (its end time 36 s), the others 3 s early: the reverse of the trend
+# shown, but on a bound taken where the run ended
 for i, p in enumerate(P):
     seed("censored", "U183_M177_1L_seed%d" % (i + 1), 24, same(8 + 0.5 * p))
-    seed("censored", "U183_M227_1L_seed%d" % (i + 1), 9,
-         same(nan if i == 7 else 5 + 0.2 * p))
+    seed("censored", "U183_M227_1L_seed%d" % (i + 1), 36,
+         same(nan if i == 7 else 5 + 0.2 * p), rest=9 if i == 7 else None)
 # fasterCensored: the trend shown, but the faster condition's 8th seed not
 # risen by 24 s: its bound may understate its mean
 for i, p in enumerate(P):
@@ -236,6 +246,14 @@ grep -q "| U183_M227_1L | 1 | 8 | >=.* | undecided (censored seeds) |" log.censo
     || fail "a censored mean below the margin not undecided, or not a bound: $(cat log.censored)"
 grep -q "criteria: met 1 of 3, not met 0, undecided 2, too few seeds 0" log.censored \
     || fail "the count with undecided criteria: $(cat log.censored)"
+# the seed whose bed came to rest censored where its run ended (9 s), not at
+# its end time (36 s): the bound's mean (7 seeds of 5 + 0.2 P and 9) 5.46 s
+grep -q "| U183_M227_1L | 1 | 8 | >=5.46 " log.censored \
+    || fail "a seed at rest not censored where its run ended: $(cat log.censored)"
+py "$compare" censored -reference experiment -perSeed > log.censoredSeeds 2>&1 \
+    || { cat log.censoredSeeds; fail "compare.py -perSeed on censored seeds"; }
+grep -qF "| U183_M227_1L | 8 | >=9.00 (at rest) |" log.censoredSeeds \
+    || fail "-perSeed: the seed at rest not marked: $(cat log.censoredSeeds)"
 py "$compare" fasterCensored -reference experiment > log.fasterCensored 2>&1 \
     || { cat log.fasterCensored; fail "compare.py on a censored faster condition"; }
 grep -q "heavier bed rises slower, simulated: .*: undecided (censored seeds)" \

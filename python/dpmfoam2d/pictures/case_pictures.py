@@ -17,11 +17,11 @@ import argparse
 import math
 import json
 import os
-import subprocess
 import sys
 
-from .. import BIN_DIR, particles as pio, tables
-from . import plot_mixing, tools
+from .. import particles as pio, tables
+from . import movie as case_movie, plot_mixing, tools
+
 
 def main():
     ap = argparse.ArgumentParser(prog="dpmPictures", description=__doc__,
@@ -69,10 +69,12 @@ def main():
             entry["mixing"] = out
             withMixing.append((case, label))
         if args.movie and times:
-            movie = os.path.join(case, "images", "movie.mp4")
-            subprocess.run([os.path.join(BIN_DIR, "dpmMovie"), case,
-                            "-every", str(args.every), "-o", movie])
-            entry["movie"] = movie if os.path.isfile(movie) else None
+            # a movie that cannot be made is said; the other pictures stand
+            try:
+                entry["movie"] = case_movie.make_movie(
+                    case, os.path.join(case, "images", "movie.mp4"), every=args.every)
+            except (FileNotFoundError, RuntimeError, ValueError) as e:
+                print("dpmPictures: no movie of %s: %s" % (case, e), file=sys.stderr)
         summary["cases"].append(entry)
         for path in entry["snapshots"] + [entry["mixing"], entry["movie"]]:
             if path:
@@ -88,7 +90,7 @@ def main():
 
 
 def command():
-    """bin/dpmPictures."""
+    """The console script dpmPictures."""
     try:
         main()
     except (FileNotFoundError, RuntimeError, ValueError) as e:

@@ -19,9 +19,65 @@ import os
 import shutil
 import subprocess
 import sys
+from typing import Optional
 
 from .. import particles as pio
 from . import tools
+
+
+def make_movie(case: str, out: Optional[str] = None, fps: int = 25, every: int = 1,
+               height: int = 720, full: bool = False, start: Optional[float] = None,
+               end: Optional[float] = None, keep: bool = False) -> str:
+    """The movie of the case (see the module's usage); returns its path.
+    ValueError for arguments out of range or no readable particle file,
+    RuntimeError when rendering or ffmpeg fails."""
+    if every < 1 or fps < 1 or height < 2:
+        raise ValueError("-every and -fps must be >= 1, -height >= 2")
+    for name, value in (("start", start), ("end", end)):
+        if value is not None and not math.isfinite(value):
+            raise ValueError("-%s %g: a time must be a finite number (s)" % (name, value))
+    pio.check_case(case)
+
+    times = [t for t, _ in pio.list_times(case)
+             if (start is None or t >= start - 1e-12)
+             and (end is None or t <= end + 1e-12)][::every]
+    # a series: a file that cannot be read is left out, said, not drawn
+    readable = []
+    for t in times:
+        problem = pio.readable(pio.nearest_time(case, t)[1])
+        if problem:
+            print("dpmMovie: warning: %s; its frame is left out" % problem, file=sys.stderr)
+        else:
+            readable.append(t)
+    times = readable
+    if not times:
+        raise ValueError("no particle files in %s for these times" % pio.particles_dir(case))
+    out = out or os.path.join(case, "images", "movie.mp4")
+    frameDir = os.path.join(case, "images", "frames")
+    shutil.rmtree(frameDir, ignore_errors=True)
+    os.makedirs(frameDir)
+    frames = [os.path.join(frameDir, "frame_%06d.png" % i) for i in range(len(times))]
+    print("dpmMovie: rendering %d frames" % len(frames))
+    tools.render(case, times, frames, height=height, full=full)
+    os.makedirs(os.path.dirname(os.path.abspath(out)) or ".", exist_ok=True)
+    # encoded beside out, then renamed onto it: a link at out is replaced,
+    # not written through
+    tmp = os.path.join(os.path.dirname(os.path.abspath(out)),
+                       ".%s.%d%s" % (os.path.basename(out), os.getpid(),
+                                     os.path.splitext(out)[1] or ".mp4"))
+    cmd = ["ffmpeg", "-y", "-loglevel", "error", "-framerate", str(fps),
+           "-i", os.path.join(frameDir, "frame_%06d.png"),
+           "-c:v", "libx264", "-pix_fmt", "yuv420p",
+           "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", tmp]
+    r = subprocess.run(cmd)
+    if r.returncode != 0 or not os.path.isfile(tmp):
+        if os.path.exists(tmp):
+            os.remove(tmp)
+        raise RuntimeError("ffmpeg failed: %s" % " ".join(cmd))
+    os.replace(tmp, out)
+    if not keep:
+        shutil.rmtree(frameDir, ignore_errors=True)
+    return out
 
 
 def main():
@@ -37,59 +93,12 @@ def main():
     ap.add_argument("-end", type=float, default=None, help="last time (s)")
     ap.add_argument("-keep", action="store_true", help="keep the frame PNGs")
     args = ap.parse_args()
-    if args.every < 1 or args.fps < 1 or args.height < 2:
-        sys.exit("dpmMovie: -every and -fps must be >= 1, -height >= 2")
-    for name in ("start", "end"):
-        value = getattr(args, name)
-        if value is not None and not math.isfinite(value):
-            sys.exit("dpmMovie: -%s %g: a time must be a finite number (s)" % (name, value))
-    pio.check_case(args.case)
-
-    times = [t for t, _ in pio.list_times(args.case)
-             if (args.start is None or t >= args.start - 1e-12)
-             and (args.end is None or t <= args.end + 1e-12)][::args.every]
-    # a series: a file that cannot be read is left out, said, not drawn
-    readable = []
-    for t in times:
-        problem = pio.readable(pio.nearest_time(args.case, t)[1])
-        if problem:
-            print("dpmMovie: warning: %s; its frame is left out" % problem, file=sys.stderr)
-        else:
-            readable.append(t)
-    times = readable
-    if not times:
-        sys.exit("dpmMovie: no particle files in %s for these times"
-                 % pio.particles_dir(args.case))
-    out = args.out or os.path.join(args.case, "images", "movie.mp4")
-    frameDir = os.path.join(args.case, "images", "frames")
-    shutil.rmtree(frameDir, ignore_errors=True)
-    os.makedirs(frameDir)
-    frames = [os.path.join(frameDir, "frame_%06d.png" % i) for i in range(len(times))]
-    print("dpmMovie: rendering %d frames" % len(frames))
-    tools.render(args.case, times, frames, height=args.height, full=args.full)
-    os.makedirs(os.path.dirname(os.path.abspath(out)) or ".", exist_ok=True)
-    # encoded beside out, then renamed onto it: a link at out is replaced,
-    # not written through
-    tmp = os.path.join(os.path.dirname(os.path.abspath(out)),
-                       ".%s.%d%s" % (os.path.basename(out), os.getpid(),
-                                     os.path.splitext(out)[1] or ".mp4"))
-    cmd = ["ffmpeg", "-y", "-loglevel", "error", "-framerate", str(args.fps),
-           "-i", os.path.join(frameDir, "frame_%06d.png"),
-           "-c:v", "libx264", "-pix_fmt", "yuv420p",
-           "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", tmp]
-    r = subprocess.run(cmd)
-    if r.returncode != 0 or not os.path.isfile(tmp):
-        if os.path.exists(tmp):
-            os.remove(tmp)
-        sys.exit("dpmMovie: ffmpeg failed: %s" % " ".join(cmd))
-    os.replace(tmp, out)
-    if not args.keep:
-        shutil.rmtree(frameDir, ignore_errors=True)
-    print(out)
+    print(make_movie(args.case, args.out, args.fps, args.every, args.height, args.full,
+                     args.start, args.end, args.keep))
 
 
 def command():
-    """bin/dpmMovie."""
+    """The console script dpmMovie."""
     try:
         main()
     except (FileNotFoundError, RuntimeError, ValueError) as e:

@@ -24,7 +24,7 @@ import sys
 from .. import particles as pio
 from . import tools
 
-SCENE = os.path.join(os.path.dirname(os.path.realpath(__file__)), "paraview_scene.py")
+SCENE = tools.package_script("paraview_scene.py")
 
 
 def class_labels(case, path):
@@ -90,5 +90,5 @@ def main():
 
 
 def command():
-    """bin/dpmParaView."""
+    """The console script dpmParaView."""
     main()

@@ -117,7 +117,7 @@ def main():
 
 
 def command():
-    """bin/dpmPlotMixing."""
+    """The console script dpmPlotMixing."""
     try:
         main()
     except (FileNotFoundError, ValueError) as e:

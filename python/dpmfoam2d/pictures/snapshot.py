@@ -20,9 +20,27 @@ import argparse
 import math
 import os
 import sys
+from typing import Optional
 
 from .. import particles as pio
 from . import tools
+
+
+def snapshot(case: str, time: Optional[float] = None, out: Optional[str] = None,
+             height: int = 1200, full: bool = False) -> str:
+    """The snapshot of the particle file nearest to time (default the
+    latest) as a PNG (see the module's usage); returns its path. ValueError
+    for arguments out of range or a particle file that cannot be read,
+    RuntimeError when rendering fails."""
+    if height < 2:
+        raise ValueError("-height %d must be >= 2 pixels" % height)
+    if time is not None and not math.isfinite(time):
+        raise ValueError("-time %g: a time must be a finite number (s)" % time)
+    pio.check_case(case)
+    t, _ = pio.nearest_time(case, time)
+    out = out or os.path.join(case, "images", "snapshot_%s.png" % pio.time_name(t))
+    tools.render(case, [t], [out], height=height, full=full)
+    return out
 
 
 def main():
@@ -34,21 +52,11 @@ def main():
     ap.add_argument("-height", type=int, default=1200, help="height in pixels")
     ap.add_argument("-full", action="store_true", help="whole column, not just the bed")
     args = ap.parse_args()
-    if args.height < 2:
-        sys.exit("dpmSnapshot: -height %d must be >= 2 pixels" % args.height)
-    if args.time is not None and not math.isfinite(args.time):
-        sys.exit("dpmSnapshot: -time %g: a time must be a finite number (s)" % args.time)
-    pio.check_case(args.case)
-
-    t, _ = pio.nearest_time(args.case, args.time)
-    out = args.out or os.path.join(args.case, "images",
-                                   "snapshot_%s.png" % pio.time_name(t))
-    tools.render(args.case, [t], [out], height=args.height, full=args.full)
-    print(out)
+    print(snapshot(args.case, args.time, args.out, args.height, args.full))
 
 
 def command():
-    """bin/dpmSnapshot."""
+    """The console script dpmSnapshot."""
     try:
         main()
     except (FileNotFoundError, RuntimeError, ValueError) as e:

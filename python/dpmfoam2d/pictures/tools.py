@@ -3,6 +3,7 @@
 """Shared steps of the dpm* picture commands: running the off-screen
 renderer, and the layout of the mixing plots."""
 
+import importlib.resources
 import os
 import random
 import socket
@@ -13,8 +14,22 @@ import time
 from .. import particles as pio
 from ..files import create_new
 
-HERE = os.path.dirname(os.path.realpath(__file__))
-RENDER = os.path.join(HERE, "render.py")
+def package_script(name):
+    """The path of a script shipped in this package (pictures/<name>), which
+    ParaView's Python runs as a file."""
+    return str(importlib.resources.files(__package__).joinpath(name))
+
+
+def paraview_env(**extra):
+    """The environment of a pvbatch that imports this package: ParaView's
+    own Python finds it where this process found it (a pip installation
+    outside the project, or the project's python/ on PYTHONPATH)."""
+    top = os.path.dirname(str(importlib.resources.files("dpmfoam2d")).rstrip(os.sep))
+    path = [top] + [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
+    return dict(os.environ, PYTHONPATH=os.pathsep.join(path), **extra)
+
+
+RENDER = package_script("render.py")
 
 # Class colours (RGB 0-1), drawn unlit: ColorBrewer red for small (class 0),
 # blue for large (class 1). The renderer and the tests take them from here.
@@ -115,7 +130,7 @@ def render(case, times, outs, height=1200, full=False):
     failures = []
     for attempt in range(3):
         with VirtualDisplay() as xvfb:
-            env = dict(os.environ, DISPLAY=xvfb.display)
+            env = paraview_env(DISPLAY=xvfb.display)
             r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                text=True, env=env)
             alive = xvfb.server.poll() is None

@@ -3,8 +3,8 @@
 """Studies that travel between machines: a finished case kept as a small
 summary case (its settings, its template's dictionaries, the tables that
 results/ reads, the head of its log and the builds it ran with) that
--results reads like the case itself, exported into an archive and imported
-into another study directory (dpmStudy -export, -import).
+results/ reads like the case itself, exported into an archive and imported
+into another study directory (dpmStudy export, import).
 
 A summary case is a directory of the study like a case, marked by
 constant/archivedCase; the runner counts it as finished and never runs it.
@@ -22,11 +22,9 @@ import os
 import re
 import shutil
 import subprocess
-import sys
 import tarfile
 import tempfile
 
-from .. import PROJECT_DIR
 from ..files import replacing, write_text
 from . import cases as study_cases, definition as study_definition
 from .jobs import latest_complete_time
@@ -34,13 +32,19 @@ from .summary_case import (ArchiveError, BUILD_RECORD, LOG, LOG_HEAD_END, MARKER
                            VARIANT, dictionary_files, open_own, parse_marker, read_own,
                            settings_problems, summary_files)
 from .unpack import unpack
+from ..project import project_dir_or_none
 
 
 def build():
-    """The project's commit (with '+local changes' when the checkout has
-    uncommitted ones), or 'unknown' outside a git checkout."""
+    """The commit of the project whose solver runs (DPMFOAM2D_PROJECT, with
+    '+local changes' when its checkout has uncommitted ones), or 'unknown'
+    without one or outside a git checkout."""
+    project = project_dir_or_none()
+    if project is None:
+        return "unknown"
+
     def git(*args):
-        return subprocess.run(["git", "-C", PROJECT_DIR] + list(args), capture_output=True,
+        return subprocess.run(["git", "-C", project] + list(args), capture_output=True,
                               text=True).stdout.strip()
     try:
         commit = git("rev-parse", "--short=12", "HEAD")
@@ -82,7 +86,7 @@ def summarise(case, dest, source):
     if is_summary(case):
         marker = read_own(case, MARKER)
     else:
-        marker = ("# A finished case kept as its summary (dpmStudy -export); the run's\n"
+        marker = ("# A finished case kept as its summary (dpmStudy export); the run's\n"
                   "# settings, dictionaries, tables and log head; never run again\n"
                   "time %.9g\nfrom %s\n" % (latest_complete_time(case), source))
     for d in ("constant", "system"):
@@ -137,14 +141,14 @@ def finished_cases(study_dir, say):
     return out
 
 
-def export(study_dir, archive, X, say):
+def export(study_dir, archive, say):
     """archive (.tar.gz) made of the study's definition and a summary case
     of each finished case (their bed statistics made first)."""
     if not archive.endswith((".tar.gz", ".tgz")):
-        raise ArchiveError("-export %s: the archive's name must end in .tar.gz" % archive)
+        raise ArchiveError("export %s: the archive's name must end in .tar.gz" % archive)
     folder = os.path.dirname(archive) or "."
     if not os.path.isdir(folder):
-        raise ArchiveError("-export %s: no directory %s to write it into" % (archive, folder))
+        raise ArchiveError("export %s: no directory %s to write it into" % (archive, folder))
     definition = os.path.join(study_dir, study_definition.FILE_NAME)
     if not os.path.isfile(definition):
         raise ArchiveError("%s has no %s: not a study directory dpmStudy made"
@@ -160,7 +164,7 @@ def export(study_dir, archive, X, say):
                    read_own(study_dir, study_definition.FILE_NAME))
         for c in cases:
             if not is_summary(c["dir"]):
-                study_cases.bed_statistics(c["dir"], X)
+                study_cases.remake_bed_statistics(c["dir"])
             summarise(c["dir"], os.path.join(top, c["case"]), os.path.realpath(c["dir"]))
         # A new file of a fresh name beside the archive, renamed onto it
         # when whole: a link at either name is replaced, never written through
@@ -219,7 +223,7 @@ def variant_text(case):
 
 def import_study(study_dir, source, say):
     """Every finished case of source (a study directory or an archive made
-    by -export) into study_dir as summary cases; returns the number
+    by export) into study_dir as summary cases; returns the number
     imported. Refuses (ArchiveError) another studyDict, a case whose
     settings or template dictionaries differ from the study's, and
     anything but summary cases in an archive."""
@@ -233,7 +237,7 @@ def import_study(study_dir, source, say):
         elif os.path.isdir(source):
             other, name_of = source, lambda path: path
         else:
-            raise ArchiveError("-import %s: no study directory or archive there" % source)
+            raise ArchiveError("import %s: no study directory or archive there" % source)
         return merge(study_dir, other, source, say, name_of, os.path.isfile(source))
 
 
@@ -380,15 +384,3 @@ def place(study_dir, new, source, from_archive, say):
         for d in made:
             if d is not None:
                 shutil.rmtree(d, ignore_errors=True)
-
-
-def command(args, say):
-    """-export and -import of the command line; exits with the reason on
-    an archive or study that cannot be read or merged."""
-    try:
-        if args.export:
-            export(args.studyDir, args.export, args.mean, say)
-        for source in args.importFrom or []:
-            import_study(args.studyDir, source, say)
-    except (ArchiveError, OSError) as e:
-        sys.exit("dpmStudy: %s" % e)

@@ -6,12 +6,12 @@ and the bed statistics over the last X s, Umf and U0 from its log)."""
 
 import os
 import re
-import subprocess
 from collections import OrderedDict
 
 import numpy as np
 
-from .. import BIN_DIR
+from ..bed_statistics import write_bed_statistics
+from ..fields import FieldError
 from ..tables import read_postprocessing
 
 # Columns of dpmBedStatistics' tables that the summary averages
@@ -112,8 +112,9 @@ def case_row(c, X, rate_window):
     row["MsampleFinal"] = L["M"][-1] if L is not None and len(L["M"]) else np.nan
     row["MsampleMean"] = L["M"][L["Time"] >= L["Time"][-1] - X - 1e-9].mean() \
         if L is not None and len(L["M"]) else np.nan
-    row.update(bed_statistics(case, X, remake=not os.path.isfile(
-        os.path.join(case, "constant", "archivedCase"))))
+    if not os.path.isfile(os.path.join(case, "constant", "archivedCase")):
+        remake_bed_statistics(case)
+    row.update(bed_statistics(case, X))
     windows = [OrderedDict(case=c["case"], variant=c["variant"], seed=c["seed"] or "",
                            wSmall=c["wSmall"], pressure=c["pressure"], **win)
                for win in time_windows(t, M["M"], tS, S, X)]
@@ -127,15 +128,18 @@ def case_row(c, X, rate_window):
     return row, windows
 
 
-def bed_statistics(case, X, remake=True):
-    """Means over the last X s of dpmBedStatistics' tables (remade first,
-    unless the case is a summary of a run elsewhere, which has only them)."""
-    if remake:
-        r = subprocess.run([os.path.join(BIN_DIR, "dpmBedStatistics"), case],
-                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                           universal_newlines=True)
-        if r.returncode != 0:
-            say("results: %s" % r.stdout.strip())
+def remake_bed_statistics(case):
+    """The case's bed statistics (dpmBedStatistics' tables) made anew from
+    its fields and particle files; a case without them is said, not fatal
+    (a summary of a run elsewhere has only the tables, and keeps them)."""
+    try:
+        write_bed_statistics(case)
+    except (FieldError, ValueError) as e:
+        say("results: dpmBedStatistics: %s" % e)
+
+
+def bed_statistics(case, X):
+    """Means over the last X s of dpmBedStatistics' tables."""
     out = {k: np.nan for k in BED_STATISTICS}
     for name in ("bed.dat", "particles.dat"):
         T = read_postprocessing(case, "bedStatistics", name)

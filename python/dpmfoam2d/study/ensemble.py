@@ -8,12 +8,14 @@ ensemble mean with a two-sided Student-t confidence interval, and two
 ensembles are compared through the difference of their means with Welch's
 interval (unequal variances, Welch-Satterthwaite degrees of freedom). A
 trend is called only where the interval of the difference excludes zero.
+The intervals are those of dpmfoam2d.statistics.
 """
 
 import math
 
 import numpy as np
-from scipy import stats
+
+from .. import statistics as st
 
 LEVEL = 0.95        # confidence level of every interval
 
@@ -27,31 +29,15 @@ def mean_ci(values, level=LEVEL):
     """(mean, half-width of the interval, n) over the finite values; the
     half-width is nan for fewer than two values (no spread measured)."""
     v = finite(values)
-    n = len(v)
-    if n == 0:
-        return math.nan, math.nan, 0
-    if n == 1:
-        return float(v[0]), math.nan, 1
-    half = stats.t.ppf(0.5 + level / 2, n - 1) * v.std(ddof=1) / math.sqrt(n)
-    return float(v.mean()), float(half), n
+    mean, half = st.mean_interval(v, level)
+    return mean, half, len(v)
 
 
 def difference_ci(a, b, level=LEVEL):
     """(mean(a) - mean(b), half-width of Welch's interval, na, nb). The
     half-width is nan unless both ensembles have two or more values."""
-    va, vb = finite(a), finite(b)
-    na, nb = len(va), len(vb)
-    if na == 0 or nb == 0:
-        return math.nan, math.nan, na, nb
-    diff = float(va.mean() - vb.mean())
-    if na < 2 or nb < 2:
-        return diff, math.nan, na, nb
-    sa, sb = va.var(ddof=1) / na, vb.var(ddof=1) / nb
-    se2 = sa + sb
-    if se2 == 0:
-        return diff, 0.0, na, nb
-    dof = se2 ** 2 / (sa ** 2 / (na - 1) + sb ** 2 / (nb - 1))
-    return diff, float(stats.t.ppf(0.5 + level / 2, dof) * math.sqrt(se2)), na, nb
+    d = st.welch_difference(finite(a), finite(b))
+    return d.difference, d.half_width(level), d.n_a, d.n_b
 
 
 def sign_of(diff, half):
@@ -85,7 +71,7 @@ def band(curves, level=LEVEL):
     mean = Y.mean(axis=0)
     if n < 2:
         return grid, mean, np.full_like(mean, np.nan)
-    half = stats.t.ppf(0.5 + level / 2, n - 1) * Y.std(axis=0, ddof=1) / math.sqrt(n)
+    half = st.t_quantile(level, n - 1) * Y.std(axis=0, ddof=1) / math.sqrt(n)
     return grid, mean, half
 
 
@@ -129,5 +115,5 @@ def shift_ci(variant, baseline, level=LEVEL):
     var = sum(s2 * c for s2, _, c in terms)
     if var == 0:
         return shift, 0.0, borrowed
-    dof = var ** 2 / sum((s2 * c) ** 2 / d for s2, d, c in terms)
-    return shift, float(stats.t.ppf(0.5 + level / 2, dof) * math.sqrt(var)), borrowed
+    dof = st.satterthwaite_dof([s2 * c for s2, _, c in terms], [d for _, d, _ in terms])
+    return shift, float(st.t_quantile(level, dof) * math.sqrt(var)), borrowed

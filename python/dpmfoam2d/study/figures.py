@@ -6,7 +6,6 @@ the indices and the bed statistics against pressure (error bars: 95 %
 intervals over seeds), and the final states side by side (Fig. 2)."""
 
 import os
-import subprocess
 from collections import OrderedDict
 
 import matplotlib
@@ -14,7 +13,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from .. import BIN_DIR  # noqa: E402
+from ..pictures.snapshot import snapshot  # noqa: E402
 from ..tables import read_postprocessing  # noqa: E402
 from . import archive as study_archive, ensemble as ens  # noqa: E402
 from ..files import own_directory, save_figure
@@ -160,10 +159,8 @@ def snapshots(rows, groups, dirs, out):
                           flush=True)
                     continue
                 first = pictured[0]
-                png = os.path.join(snaps, first["case"] + ".png")
-                subprocess.run([os.path.join(BIN_DIR, "dpmSnapshot"), dirs[first["case"]],
-                                "-o", png, "-height", "700"], check=True,
-                               stdout=subprocess.DEVNULL)
+                png = snapshot(dirs[first["case"]], height=700,
+                               out=os.path.join(snaps, first["case"] + ".png"))
                 ax.imshow(plt.imread(png))
                 ax.set_title("w %g, %g bar" % (w, p) +
                              ("" if not first["seed"] else ", seed %s" % first["seed"]),

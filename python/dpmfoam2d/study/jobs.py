@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""The local runner of bin/dpmStudy: each bed or case a child process group
+"""The local runner of dpmStudy: each bed or case a child process group
 (Job), run a few at once with progress lines (run_here), skipping a
 directory another process works in (running_in, the directory's lock); and
 the restart housekeeping: logs rotated, time directories without a complete

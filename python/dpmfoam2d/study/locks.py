@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""The locks of bin/dpmStudy: a case's or bed's (src/dpmCoupling/caseLock:
+"""The locks of dpmStudy: a case's or bed's (src/dpmCoupling/caseLock:
 flock on <dir>/.dpmLock, its first line naming the holder), results/'s and
 the study's own. A lock path is a regular file or nothing: a symbolic link,
 a directory or a device there is refused, naming it, and the holder line

@@ -130,7 +130,7 @@ def write_variants(out, cases):
                 seen[c["variant"]] = (c["case"], f.read())
     with replacing(os.path.join(out, "variants.md")) as f:
         f.write("Variants of this study (%s: the template as it is). Each case keeps its "
-                "edits in constant/variant; `dpmStudy <dir> -variant "
+                "edits in constant/variant; `dpmStudy run <dir> -variant "
                 "<case>/constant/variant` reruns them.\n" % BASELINE)
         for name, (case, text) in seen.items():
             f.write("\n## %s (recorded in %s/constant/variant)\n\n```\n%s```\n"

@@ -4,7 +4,7 @@
 ensembles over seeds with 95 % intervals, the findings of the study's
 studyDict (study.definition) as differences between ensembles, what each
 variant does to them (study.verdicts), the tables (study.reports) and the
-figures. Used by bin/dpmStudy (-results)."""
+figures. Used by dpmStudy (run, results, import)."""
 
 import fcntl
 import os

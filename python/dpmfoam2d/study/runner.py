@@ -10,7 +10,6 @@ import re
 import shutil
 import sys
 
-from .. import BIN_DIR
 from . import definition as study_definition
 from . import archive as study_archive, cases as study_cases, jobs as study_jobs, \
     slurm as study_slurm
@@ -19,6 +18,7 @@ from ..files import own_directory, write_text
 from .jobs import Job, latest_complete_time, lock_holder, running_in
 from .locks import LockError, flock_holders, open_lock, take_lock
 from .variants import Variant
+from ..project import require_programs
 
 
 # What a case or bed does not take from the template: run products, and
@@ -28,8 +28,8 @@ NOT_COPIED = re.compile(r"^([0-9][0-9.eE+-]*|[0-9.]+\.incomplete(\.[0-9]+)?|part
                         r"polyMesh|packedBed.*|variants|studyDict)$")
 
 
-# The study's own lock: shared by its local runs, held alone by a -slurm
-# submission
+# The study's own lock: shared by its local runs, held alone by a Slurm
+# submission (dpmStudy submit)
 STUDY_LOCK = ".dpmStudy.lock"
 
 
@@ -45,6 +45,17 @@ def bed_name(w, seed=None, variant=None):
 def case_name(w, p, seed=None, variant=None):
     return "w%.2f_%gbar" % (w, p) + ("_" + variant if variant else "") + \
         ("" if seed is None else "_seed%d" % seed)
+
+
+def end_time(case):
+    """The end time a case's constant/caseSettings sets."""
+    return float(study_cases.flat_dictionary(
+        os.path.join(case, "constant", "caseSettings"))["endTime"])
+
+
+def finished(case):
+    """Whether the case's end time is on disk (or its summary records it)."""
+    return study_archive.finished(case, end_time(case))
 
 
 def locked(directory):
@@ -87,7 +98,6 @@ class Study:
         self.ps = args.p
         self.seeds = args.seeds or [None]
         self.definition = args.definition
-        self.here = BIN_DIR
         self.slurm_states = None     # squeue's view, read once when needed
         self.variant = Variant(args.variant, self.template) if args.variant else None
         if self.variant:
@@ -173,11 +183,10 @@ class Study:
                                                 self.variant.name if self.variant else None))
 
     def end_time(self, case):
-        return float(study_cases.flat_dictionary(
-            os.path.join(case, "constant", "caseSettings"))["endTime"])
+        return end_time(case)
 
     def finished(self, case):
-        return study_archive.finished(case, self.end_time(case))
+        return finished(case)
 
     def case_job(self, w, p, seed, bed):
         case = self.case_dir(w, p, seed)
@@ -331,7 +340,7 @@ class Study:
         os.makedirs(self.dir, exist_ok=True)
         lock = self.study_lock(exclusive=False)
         if lock is None:
-            sys.exit("dpmStudy: a -slurm submission of %s is under way (it holds %s): run "
+            sys.exit("dpmStudy: a Slurm submission of %s is under way (it holds %s): run "
                      "again when it has ended" % (self.dir, os.path.join(self.dir, STUDY_LOCK)))
         try:
             self.run_locked()
@@ -342,10 +351,12 @@ class Study:
         bed_jobs, case_jobs, queued = self.prepare()
         if queued:
             sys.exit("dpmStudy: Slurm packs beds of this study (tasks %s): run again when "
-                     "they have finished, or submit with -slurm" % ", ".join(queued))
+                     "they have finished, or use dpmStudy submit" % ", ".join(queued))
         jobs = bed_jobs + case_jobs
         if not jobs:
             return
+        require_programs(["blockMesh"] + (["dpmPackBed"] if bed_jobs else [])
+                         + (["dpmFoam2D"] if case_jobs else []), "dpmStudy run")
         study_jobs.run_here(self, jobs)
 
     def submit(self, sbatch_options, results_args):

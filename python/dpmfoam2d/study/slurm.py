@@ -2,12 +2,12 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """dpmStudy on a Slurm cluster: the beds as one job array, the cases as a
 second array that depends on it, results/ as a last job; and the state of
-every bed and case of a study (local or Slurm runs) for -status.
+every bed and case of a study (local or Slurm runs) for dpmStudy status.
 
 Each bed or case directory gets dpmStudy.sh (what its task runs: the same
 steps as a local run, its log rotated, the DEM threads from
 --cpus-per-task), log.slurm (one line per task start and end) and
-.dpmStudy.slurm (the Slurm id of its task, <arrayJob>_<task>, for -status
+.dpmStudy.slurm (the Slurm id of its task, <arrayJob>_<task>, for status
 and to refuse a second submission while it is pending or running).
 """
 
@@ -18,6 +18,7 @@ import subprocess
 import sys
 import time
 from ..files import own_directory, replacing
+from ..project import project_path
 
 RECORD = ".dpmStudy.slurm"
 ACTIVE = ("PENDING", "RUNNING", "CONFIGURING", "COMPLETING", "SUSPENDED", "REQUEUED",
@@ -58,7 +59,7 @@ def active(directory, states=None):
     return (job, state) if state in ACTIVE else None
 
 
-def task_script(job, project):
+def task_script(job, bashrc):
     """<dir>/dpmStudy.sh: one bed or case as a Slurm task (or by hand)."""
     log = job.log
     return """#!/bin/bash
@@ -82,7 +83,7 @@ bash -c %(command)s > %(log)s 2>&1
 status=$?
 echo "$(date '+%%F %%T') task $task: exit $status" >> log.slurm
 exit $status
-""" % dict(name=job.name, bashrc=shlex.quote(os.path.join(project, "etc", "bashrc")),
+""" % dict(name=job.name, bashrc=shlex.quote(bashrc),
            dir=shlex.quote(job.dir), qname=shlex.quote(job.name.replace("/", "-")),
            log=shlex.quote(log), command=shlex.quote(job.command))
 
@@ -106,7 +107,7 @@ def sbatch(args, what):
 
 def check_sbatch():
     if shutil.which("sbatch") is None:
-        sys.exit("dpmStudy: -slurm: no sbatch on PATH (is this a Slurm cluster's login "
+        sys.exit("dpmStudy: submit: no sbatch on PATH (is this a Slurm cluster's login "
                  "node, and its module loaded?); nothing submitted")
 
 
@@ -114,7 +115,9 @@ def submit(study, beds, cases, bed_deps, sbatch_options, results_args):
     """Submit the beds, then the cases (afterok on the beds they need),
     then results/ (afterany on the cases). beds, cases: Jobs to run;
     bed_deps: Slurm ids of beds already pending or running."""
-    project = os.path.dirname(study.here)
+    # each task sources the project's environment, as a local run has it
+    bashrc = project_path("dpmStudy submit (its Slurm tasks source etc/bashrc)",
+                          "etc", "bashrc")
     slurm = os.path.join(study.dir, "slurm")
     own_directory(slurm)
     task = os.path.join(slurm, "task.sh")
@@ -127,7 +130,7 @@ def submit(study, beds, cases, bed_deps, sbatch_options, results_args):
     def array(jobs, kind, deps):
         for j in jobs:
             with replacing(os.path.join(j.dir, "dpmStudy.sh")) as f:
-                f.write(task_script(j, project))
+                f.write(task_script(j, bashrc))
         listing = os.path.join(slurm, "%s_%s.list" % (stamp, kind))
         with replacing(listing) as f:
             f.write("".join(j.dir + "\n" for j in jobs))
@@ -155,9 +158,9 @@ def submit(study, beds, cases, bed_deps, sbatch_options, results_args):
     with replacing(script) as f:
         f.write("#!/bin/bash\n# Written by dpmStudy: results/ once the cases have run\n"
                 ". %s || exit 1\nexec %s\n" % (
-                    shlex.quote(os.path.join(project, "etc", "bashrc")),
-                    " ".join(map(shlex.quote, [os.path.join(study.here, "dpmStudy"),
-                                               study.dir] + results_args))))
+                    shlex.quote(bashrc),
+                    " ".join(map(shlex.quote, ["dpmStudy", "results", study.dir]
+                                 + results_args))))
     resultsJob = sbatch(["--job-name", "%s-results" % name, "--dependency",
                          "afterany:" + casesJob, "--kill-on-invalid-dep=yes",
                          "--output", os.path.join(slurm, "%x_%j.out")] + sbatch_options
@@ -196,19 +199,20 @@ def hours(seconds):
     return "%.1f h" % (seconds/3600) if seconds >= 3600 else "%.0f min" % (seconds/60)
 
 
-def status(study, running_in, latest_complete_time):
-    """One line per bed and case: state, job, simulated time."""
+def status(study_dir, running_in, latest_complete_time):
+    """One line per bed and case of study_dir: state, job, simulated time."""
     from . import cases as study_cases
     from .archive import is_summary, summary_time
+    from .runner import end_time, finished as is_finished
     states = queue_states()
-    beds_dir = os.path.join(study.dir, "beds")
+    beds_dir = os.path.join(study_dir, "beds")
     # (a dot name: a bed being made)
     dirs = [("beds/" + b, os.path.join(beds_dir, b), "bed")
             for b in sorted(os.listdir(beds_dir)) if not b.startswith(".")] \
         if os.path.isdir(beds_dir) else []
-    dirs += [(c["case"], c["dir"], "case") for c in study_cases.find_cases(study.dir)]
+    dirs += [(c["case"], c["dir"], "case") for c in study_cases.find_cases(study_dir)]
     if not dirs:
-        say("dpmStudy: no beds or cases in %s" % study.dir)
+        say("dpmStudy: no beds or cases in %s" % study_dir)
         return
     say("%-28s %-11s %-14s %s" % ("bed / case", "state", "job", "simulated time"))
     remaining = []      # (simulated s left, running) of every unfinished case
@@ -229,8 +233,8 @@ def status(study, running_in, latest_complete_time):
         elif is_summary(d):
             # imported: no time directories, the time its summary records;
             # never run here, so nothing of it is left to simulate
-            tc, end = summary_time(d), study.end_time(d)
-            finished = study.finished(d)
+            tc, end = summary_time(d), end_time(d)
+            finished = is_finished(d)
             say("%-28s %-11s %-14s %s" % (name, "done" if finished else "incomplete",
                                           "imported", "%s of %g s (an imported summary%s)" % (
                                               "%g" % tc if tc is not None else "no time",
@@ -239,8 +243,8 @@ def status(study, running_in, latest_complete_time):
             continue
         else:
             tc = latest_complete_time(d)
-            end = study.end_time(d)
-            finished = study.finished(d)
+            end = end_time(d)
+            finished = is_finished(d)
             log = os.path.join(d, "log.dpmFoam2D")
             running, eta = (last_progress(log) if pid or slurmState == "RUNNING"
                             else (None, None))

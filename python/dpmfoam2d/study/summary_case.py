@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""What a summary case holds (dpmStudy -export, -import) and how those
+"""What a summary case holds (dpmStudy export, import) and how those
 files are read from a case: its records (constant/caseSettings, variant,
 studyBuild, archivedCase), its dictionaries (the files of constant/ and
 system/), the head of log.dpmFoam2D and the tables results/ reads
@@ -40,7 +40,7 @@ class ArchiveError(Exception):
 
 
 def link_refusal(path):
-    return ArchiveError("%s is a symbolic link; the files -export and -import take from a "
+    return ArchiveError("%s is a symbolic link; the files export and import take from a "
                         "case must be its own: put the file itself there (nothing was read "
                         "where the link points)" % path)
 

@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Unpacking a study archive of dpmStudy -export for -import, so that it
+"""Unpacking a study archive of dpmStudy export for import, so that it
 cannot put more than a study's summary cases into the machine: every member
 is checked before anything is written, and the whole archive is refused,
 naming the member, when one is
@@ -92,7 +92,7 @@ def check_member(archive, m, parts):
         refuse("is neither a file nor a directory (a device or a FIFO)")
     kind = study_kind(parts) if parts else None
     if kind is None:
-        refuse("is no part of a study archive of dpmStudy -export, which holds " + LAYOUT)
+        refuse("is no part of a study archive of dpmStudy export, which holds " + LAYOUT)
     if kind != ("dir" if m.isdir() else "file"):
         refuse("is a %s where a study archive has a %s" % (
             "directory" if m.isdir() else "file", "directory" if kind == "dir" else "file"))
@@ -124,7 +124,7 @@ def checked_members(archive, tar):
                                "nothing was imported" % (archive, m.name, LIMITS))
         members.append((m, parts))
     if len(tops) != 1:
-        raise ArchiveError("%s: not a study archive of dpmStudy -export (%d top "
+        raise ArchiveError("%s: not a study archive of dpmStudy export (%d top "
                            "directories, one wanted)" % (archive, len(tops)))
     return members
 
@@ -158,7 +158,7 @@ def unpack(archive, into):
     try:
         tar = tarfile.open(archive, "r:*")
     except tarfile.ReadError:
-        raise ArchiveError("%s: not a study archive of dpmStudy -export (no tar archive, "
+        raise ArchiveError("%s: not a study archive of dpmStudy export (no tar archive, "
                            "compressed or not)" % archive)
     try:
         with tar:
@@ -173,5 +173,5 @@ def unpack(archive, into):
                 os.makedirs(os.path.dirname(path), exist_ok=True)
                 budget -= write_member(archive, tar, m, path, budget)
     except (tarfile.TarError, EOFError, zlib.error, gzip.BadGzipFile, lzma.LZMAError) as e:
-        raise ArchiveError("%s: not a study archive of dpmStudy -export (%s)" % (archive, e))
+        raise ArchiveError("%s: not a study archive of dpmStudy export (%s)" % (archive, e))
     return os.path.join(into, members[0][1][0])

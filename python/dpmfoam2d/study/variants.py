@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""The variants of bin/dpmStudy (-variant): named sets of dictionary edits
+"""The variants of dpmStudy (-variant): named sets of dictionary edits
 applied to a study's beds and cases, checked against the template (the
 edits themselves: study.foam_edit)."""
 
@@ -16,7 +16,7 @@ VARIANT_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9.-]*$")
 
 
 class Variant:
-    """A named set of dictionary edits (see the usage of bin/dpmStudy)."""
+    """A named set of dictionary edits (see the usage of dpmStudy)."""
 
     def __init__(self, spec, template):
         # a name is one of the template's; anything with a '/' is a file

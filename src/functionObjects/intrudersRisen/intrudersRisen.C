@@ -171,14 +171,12 @@ void Foam::functionObjects::intrudersRisen::sample()
         << " at or above the surface " << surface << " m (q " << fraction_
         << "), " << risen << " risen so far" << endl;
 
-    const scalar nextStep = t + time_.deltaTValue();
-    if (allRisen && endRun_ && nextStep < time_.endTime().value())
+    if (allRisen && endRun_ && cloudFunctionObject::endAfterNextStep(time_))
     {
         Info<< type() << ' ' << name() << ": every " << className_
             << " has risen to the surface (q " << fraction_ << ") by t = "
             << time_.timeName() << "; ending the run after one more step"
             << endl;
-        const_cast<Time&>(time_).setEndTime(nextStep);
     }
 }
 
@@ -210,13 +208,12 @@ Foam::functionObjects::intrudersRisen::intrudersRisen
     {
         risen_.insert(risen);
     }
-    const scalar t = runTime.value();
     if
     (
-        !functionObject::postProcess
-     && mesh_.foundObject<dpmCloud>(cloudName_)
-     && t >= dict.lookupOrDefault<scalar>("timeStart", -GREAT)
-     && t <= dict.lookupOrDefault<scalar>("timeEnd", GREAT)
+        cloudFunctionObject::samplesStart
+        (
+            mesh_, cloudName_, dict, runTime.value()
+        )
     )
     {
         sample();
