@@ -4,7 +4,8 @@
 // evaluation, the neighbour list in its order with the 3-vector histories, the plane walls
 // and the wall contacts, the reference positions), so a restart continues bit for bit. The
 // walls of Settings::walls, cylinders included, are in the settings key (appendWallsRecord),
-// so a state is read with the walls it was made with. A file of its own kind: a 2D state and a slab state cannot be mistaken for each other.
+// so a state is read with the walls it was made with. A file of its own kind: a 2D state
+// and a slab state cannot be mistaken for each other.
 // It holds the caller's record of the run (its models, runRecord()), the recipe of a packed
 // bed, so that a case starting from it checks every entry of how it was made, the skin and
 // the step of the last list build (the adaptive skin's state), and a checksum (64-bit

@@ -12,6 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <utility>
 
 namespace dem {
 
@@ -24,6 +27,20 @@ Vec3 vec(const Vector3& v) { return {v.x, v.y, v.z}; }
 std::string text(const Vector3& v)
 {
     return "(" + formatValue(v.x) + ", " + formatValue(v.y) + ", " + formatValue(v.z) + ")";
+}
+
+/// v and its length with the digits (6 at least) that tell the length from 1: an axis a
+/// last digit off unit length does not print as a unit one.
+std::pair<std::string, std::string> textsOfAxis(const Vector3& v, double length)
+{
+    int digits = 6;
+    auto at = [&digits](double x) {
+        std::ostringstream s;
+        s << std::setprecision(digits) << x;
+        return s.str();
+    };
+    while (digits < 17 && at(length) == at(1.0)) ++digits;
+    return {"(" + at(v.x) + ", " + at(v.y) + ", " + at(v.z) + ")", at(length)};
 }
 
 bool finite(const Vector3& v)
@@ -49,6 +66,9 @@ CylinderWall cylinder(const WallSettings& w)
 }
 
 constexpr std::size_t recordValues = 8;   // per wall in the key
+
+// An axis's length may miss 1 by this: a unit direction typed to six digits passes
+constexpr double axisLengthTolerance = 1e-6;
 
 } // namespace
 
@@ -115,6 +135,14 @@ void validateWalls(const Settings& s)
         if (!finite(direction) || !(length > 0.0) || !std::isfinite(length)) {
             throw Error(name + (isPlane ? " normal = " : " axis = ") + text(direction)
                         + " is outside the finite vectors of length > 0");
+        }
+        // A plane's normal gives its sense alone; an axis of another length is taken for a
+        // mistyped direction (its radius is given apart)
+        if (!isPlane && !(std::abs(length - 1.0) <= axisLengthTolerance)) {
+            const auto [axis, axisLength] = textsOfAxis(direction, length);
+            throw Error(name + " axis = " + axis + " of length " + axisLength + " is outside "
+                        "the unit vectors (length 1 within " + formatValue(axisLengthTolerance)
+                        + ")");
         }
         if (!isPlane && !(w.radius >= dMax && std::isfinite(w.radius))) {
             throw Error(name + " radius = " + formatValue(w.radius) + " m is outside ["

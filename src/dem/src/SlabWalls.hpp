@@ -16,8 +16,9 @@
 namespace dem {
 
 /// Throws dem::Error naming the first bad entry of Settings::walls and its allowed range: any
-/// entry in 2D; in 3D a point or direction not finite, a zero normal or axis, a cylinder's
-/// radius below the largest diameter. The classes are valid.
+/// entry in 2D; in 3D a point or direction not finite, a zero normal, an axis not of unit
+/// length (within 1e-6), a cylinder's radius below the largest diameter. The classes are
+/// valid.
 void validateWalls(const Settings& settings);
 
 /// "walls[1] (cylinder)": entry k of Settings::walls in messages.
@@ -42,7 +43,7 @@ int wallPokedThrough(const Settings& settings, const Eigen::Vector3d& p, double 
 /// Settings::walls appended to a settings key, for a restart made with other walls to be
 /// refused: eight values each (shape 0 plane or 1 cylinder, the point, the normal or axis as
 /// given, the radius or 0), then minus their number. Nothing if there are none: the key
-/// then ends in the slab's depth (> 0), as before walls were settings.
+/// then ends in the slab's depth (> 0), so the slab's six keep their key.
 void appendWallsRecord(std::vector<double>& key, const Settings& settings);
 
 /// A slab key split into the key without the walls and the walls' record (empty if none).

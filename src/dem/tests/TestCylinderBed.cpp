@@ -1,20 +1,24 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A bed in a cylinder of the slab mode (Settings::walls: a floor and a vertical cylinder,
-// without the slab's six): packed and settled inside it, at rest its weight on the walls
-// (Newton: the walls carry the weight, and a frictionless cylinder, pushing towards its axis,
-// none of it), a restart bit for bit and refused with other walls, an added plane that
-// keeps the cylinder's contacts, and bad walls refused naming the entry.
+// without the slab's six): packed and laid at random inside it over its whole cross-section,
+// settled, at rest its weight on the walls (Newton: the walls carry the weight, and a
+// frictionless cylinder, pushing towards its axis, none of it), a restart bit for bit and
+// refused with other walls, an added plane that keeps the cylinder's contacts, and bad walls
+// refused naming the entry.
 
+#include "Placement.hpp"
 #include "TestHelpers.hpp"
 #include "dem/SlabSystem.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <vector>
 
 using namespace dem;
 using namespace dem::test;
@@ -80,7 +84,80 @@ void expectSameBits(const SlabSystem& a, const SlabSystem& b, const char* what)
     }
 }
 
+/// The Kolmogorov-Smirnov distance of the values from the uniform distribution on [a, b].
+double ksUniform(std::vector<double> v, double a, double b)
+{
+    std::sort(v.begin(), v.end());
+    const double n = static_cast<double>(v.size());
+    double d = 0.0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const double f = (v[i] - a) / (b - a);
+        d = std::max({d, f - i / n, (i + 1) / n - f});
+    }
+    return d;
+}
+
 } // namespace
+
+TEST(CylinderBed, PackingFillsTheCylinderClearOfItsWall)
+{
+    // The packing draws in the box through the depth and keeps what clears the walls: no
+    // sphere of 150 small and 50 large closer to the cylinder than its radius (round-off:
+    // 1e-9 r), and each class reaches the wall: its farthest centre within a quarter
+    // diameter of R - r. Draws uniform over the disc of radius R - r miss that ring with
+    // probability 0.81^50 = 3e-5 (large) and 0.89^150 = 4e-8 (small); a packing kept a
+    // radius further in, or to a square inside the disc, misses it.
+    SlabSystem sim(columnSettings(0.1, 1));
+    sim.packRandom({150, 50}, {0.0, 2.0 * radius, 0.0, 0.02}, 11);
+    const SlabParticles& p = sim.particles();
+    ASSERT_EQ(p.size(), 200u);
+    double reach[2] = {-INFINITY, -INFINITY};
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double fromAxis = std::hypot(p.x[i] - xAxis, p.z[i] - zAxis);
+        const double r = p.radius[i];
+        EXPECT_GE(radius - fromAxis, r * (1.0 - 1e-9)) << "sphere " << i;
+        reach[p.classIndex[i]] = std::max(reach[p.classIndex[i]], fromAxis - (radius - r));
+    }
+    std::printf("  farthest centres %.3g (small) and %.3g (large) m inside R - r\n",
+                -reach[0], -reach[1]);
+    EXPECT_GT(reach[0], -0.25 * dSmall);
+    EXPECT_GT(reach[1], -0.25 * dLarge);
+}
+
+TEST(CylinderBed, ARandomPlacedParticleIsUniformOverTheCylindersFloor)
+{
+    // A particle laid at random on the floor (PlacedParticle::random) in the column, over
+    // 2000 seeds: clear of the cylinder by its radius, and uniform over the disc its centre
+    // may reach, of radius R - r: the squared distance from the axis uniform on
+    // [0, (R - r)^2] and the angle around it on [-pi, pi] (Kolmogorov-Smirnov, the 0.1 %
+    // critical value 1.95/sqrt(n), as PlacementUniform's).
+    const Settings s = columnSettings(0.1, 1);
+    const double r = 0.5 * dLarge;
+    const double reach = radius - r;
+    constexpr int draws = 2000;
+    std::vector<double> rho2, angle;
+    for (int seed = 1; seed <= draws; ++seed) {
+        BedRecipe recipe;
+        recipe.countPerClass = {10, 1};
+        recipe.region = {0.0, 2.0 * radius, 0.0, 0.05};
+        recipe.seed = static_cast<std::uint64_t>(seed);
+        PlacedParticle placed;
+        placed.classIndex = 1;
+        placed.random = true;
+        recipe.placed = {placed};
+        std::vector<int> drawn;
+        const std::vector<LaidParticle> laid = layPlacedParticles(s, recipe, drawn);
+        ASSERT_EQ(laid.size(), 1u);
+        const Vector3& c = laid[0].position;
+        const double dx = c.x - xAxis, dz = c.z - zAxis;
+        ASSERT_LE(std::hypot(dx, dz), reach * (1.0 + 1e-9)) << "seed " << seed;
+        rho2.push_back(dx * dx + dz * dz);
+        angle.push_back(std::atan2(dz, dx));
+    }
+    const double critical = 1.95 / std::sqrt(static_cast<double>(draws));
+    EXPECT_LT(ksUniform(rho2, 0.0, reach * reach), critical);
+    EXPECT_LT(ksUniform(angle, -M_PI, M_PI), critical);
+}
 
 TEST(CylinderBed, SettledColumnStaysInsideAndCarriesItsWeight)
 {
@@ -128,7 +205,7 @@ TEST(CylinderBed, SettledColumnStaysInsideAndCarriesItsWeight)
     }
 }
 
-TEST(CylinderBed, SaveAndLoadContinueBitForBitAndOtherWallsAreRefused)
+TEST(CylinderRestart, SaveAndLoadContinueBitForBitAndOtherWallsAreRefused)
 {
     const Settings s = columnSettings(0.1, 2);
     auto sim = settledColumn(s, 0.06);
@@ -159,7 +236,7 @@ TEST(CylinderBed, SaveAndLoadContinueBitForBitAndOtherWallsAreRefused)
               std::string::npos) << e;
 }
 
-TEST(CylinderBed, AnAddedPlaneKeepsTheCylindersContacts)
+TEST(CylinderSettings, AnAddedPlaneKeepsTheCylindersContacts)
 {
     // addWall puts a plane after the settings' planes, before the cylinder: the cylinder's
     // contacts, their tangential springs included, follow it to its new index.
@@ -174,7 +251,7 @@ TEST(CylinderBed, AnAddedPlaneKeepsTheCylindersContacts)
     EXPECT_GT(sim->wallForce(2).norm(), 0.0);
 }
 
-TEST(CylinderBed, BadWallsAreRefusedNamingTheEntryAndTheRange)
+TEST(CylinderSettings, BadWallsAreRefusedNamingTheEntryAndTheRange)
 {
     auto refused = [](const Settings& s) { return errorOf([&] { SlabSystem sim(s); }); };
     auto has = [](const std::string& e, const std::string& part) {
@@ -192,6 +269,16 @@ TEST(CylinderBed, BadWallsAreRefusedNamingTheEntryAndTheRange)
     e = refused(s);
     EXPECT_TRUE(has(e, "walls[1] (cylinder) axis = (0, 0, 0) is outside the finite vectors of "
                        "length > 0")) << e;
+    s.walls[1].axis = {0.0, 2.0, 0.0};
+    e = refused(s);
+    EXPECT_TRUE(has(e, "walls[1] (cylinder) axis = (0, 2, 0) of length 2 is outside the unit "
+                       "vectors (length 1 within 1e-06)")) << e;
+    s.walls[1].axis = {0.0, 1.0 + 2e-6, 0.0};
+    e = refused(s);
+    EXPECT_TRUE(has(e, "walls[1] (cylinder) axis = (0, 1.000002, 0) of length 1.000002 is "
+                       "outside the unit vectors")) << e;
+    s.walls[1].axis = {0.0, 0.6, 0.8};   // unit to round-off: accepted
+    EXPECT_EQ(refused(s), "");
     s = columnSettings(0.1, 1);
     s.walls[0].normal = {0.0, NAN, 0.0};
     e = refused(s);

@@ -72,11 +72,11 @@ TEST(CylinderWall, GeometryOfAPointInsideIsTheLinesOwn)
     EXPECT_NEAR((side.nHat - Vec3(-0.6, 0.0, 0.8)).norm(), 0.0, 1e-15);
     EXPECT_NEAR((side.nearestPoint(p) - Vec3(1.0 + 1.8, 5.0, 2.0 - 2.4)).norm(), 0.0, 1e-15);
 
-    // Through the settings the axis is made unit and the cylinder follows the planes.
+    // Through the settings, the axis in the other sense: the same cylinder, after the planes.
     Settings s = paperSettings({-5.0, 5.0, -5.0, 5.0});
     s.dimension = 3;
     s.slabDepth = 8.0;
-    s.walls = {WallSettings::cylinder({1.0, 0.0, 2.0}, {0.0, -7.0, 0.0}, 3.0),
+    s.walls = {WallSettings::cylinder({1.0, 0.0, 2.0}, {0.0, -1.0, 0.0}, 3.0),
                WallSettings::plane({0.0, -5.0, 0.0}, {0.0, 2.0, 0.0})};
     SlabSystem sim(s);
     ASSERT_EQ(sim.wallCount(), 2);

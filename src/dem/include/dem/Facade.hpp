@@ -116,7 +116,7 @@ struct WallSettings {
     WallShape shape = WallShape::plane;
     Vector3 point;          ///< plane: a point on it; cylinder: a point on the axis, m
     Vector3 normal;         ///< plane: pointing into the domain, of any length > 0
-    Vector3 axis;           ///< cylinder: its direction, either sense, of any length > 0
+    Vector3 axis;           ///< cylinder: its unit direction (to 1e-6), either sense
     double radius = 0.0;    ///< cylinder: m, >= the largest diameter
 
     static WallSettings plane(const Vector3& point, const Vector3& normal)
