@@ -40,7 +40,26 @@ void ThreadChooser::record(double seconds)
     ++calls_[team == 1 ? 0 : 1];
     if (maxThreads_ == 1) return;
     if (trial_ >= trialLength) {
-        if (--heldLeft_ <= 0) trial_ = 0;
+        if (team != 1) {
+            // The last trialCalls calls on all threads, their slowest left out, against as
+            // many of one thread's
+            watched_[watchedCalls_++ % trialCalls] = seconds;
+            if (watchedCalls_ >= trialCalls
+                && meanWithoutSlowest(watched_) > oneMean_) {
+                // Slower than one thread was at the trial: the load changed, or the step's
+                // cost did (a bed that settles or lifts); a new trial decides
+                ++holdsCutShort_;
+                hold_[1] = minHold;
+                trial_ = 0;
+                return;
+            }
+        }
+        if (--heldLeft_ <= 0) {
+            // All threads kept up with one thread for a whole hold: one thread's next hold,
+            // if a trial picks it, starts over
+            if (team != 1) hold_[0] = minHold;
+            trial_ = 0;
+        }
         return;
     }
     const int inBlock = trial_ % blockCalls;
@@ -59,13 +78,22 @@ void ThreadChooser::record(double seconds)
         }
     }
     if (!decided && ++trial_ < trialLength) return;
-    const int faster = decided ? decided
-                       : meanWithoutSlowest(times_[0]) < meanWithoutSlowest(times_[1]) ? 1
-                                                                                      : maxThreads_;
-    hold_ = faster == chosen_ ? std::min(2 * hold_, maxHold) : minHold;
-    chosen_ = faster;
-    heldLeft_ = hold_;
+    oneMean_ = meanWithoutSlowest(times_[0]);
+    hold(decided ? decided : oneMean_ < meanWithoutSlowest(times_[1]) ? 1 : maxThreads_);
+}
+
+void ThreadChooser::hold(int team)
+{
+    // The winner holds for its hold, which doubles for its next win. One thread's win
+    // starts all threads' hold over; all threads' win does not yet start one thread's
+    // over, their hold has to keep up first
+    const int k = team == 1 ? 0 : 1;
+    heldLeft_ = hold_[k];
+    hold_[k] = std::min(2 * hold_[k], maxHold);
+    if (team == 1) hold_[1] = minHold;
+    chosen_ = team;
     trial_ = trialLength;
+    watchedCalls_ = 0;
 }
 
 } // namespace dem

@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The team size chosen by timing (ThreadChooser): the faster of one thread and all wins, a
 // settled choice costs few trials, a change of the load is seen within a hold, one slow call
-// in a trial does not decide it but calls that often wait for a core do; and the engines
-// under it keep the bits of one thread.
+// in a trial does not decide it but calls that often wait for a core do, a hold on all threads
+// slower than one thread ends within a trial's calls; and the engines under it keep the bits
+// of one thread.
 
 #include "dem/SlabSystem.hpp"
 #include "dem/ThreadChooser.hpp"
@@ -12,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <functional>
 #include <utility>
@@ -108,6 +110,75 @@ TEST(ThreadChooser, OneThreadBesideABusyCore)
     // Each trial's calls on two threads stop once they took longer than one thread's 21:
     // about 12 of them, in seven trials
     EXPECT_LT(chooser.callsOnAll(), 5000 / 40);
+}
+
+TEST(ThreadChooser, TrialsThatCatchAQuietMomentDoNotKeepTwoThreadsSlower)
+{
+    // Beside a busy core whose load comes and goes, every third trial's calls on two threads
+    // catch a quiet moment (0.8 ms against one thread's 1.2 ms) and win it; otherwise, and in
+    // the holds, two threads wait for the core every third call (0.9 ms, then 5 ms: a mean
+    // of 2.3 ms). Held for all of each hold they win, two threads would cost 30 % more.
+    ThreadChooser chooser(2);
+    std::int64_t streakOnAll = 0, trials = 0, waitedOnAll = 0;
+    double spent = 0.0;
+    for (int k = 0; k < 10000; ++k) {
+        const int team = chooser.next();
+        streakOnAll = team == 1 ? 0 : streakOnAll + 1;
+        if (streakOnAll == 1) ++trials;   // each run of calls on all starts with a trial's
+        const bool lucky = streakOnAll <= blockCalls && trials % 3 == 1;
+        const double cost = team == 1 ? 1.2e-3
+                            : lucky   ? 0.8e-3
+                                      : (++waitedOnAll % 3 == 0 ? 5.0e-3 : 0.9e-3);
+        spent += cost;
+        chooser.record(cost);
+    }
+    // Never slower than one thread (10^4 calls of 1.2 ms) by more than 5 %
+    EXPECT_LT(spent, 1.05 * 10000 * 1.2e-3);
+}
+
+TEST(ThreadChooser, AHoldOnAllThreadsEndsWithinATrialsCallsOfAChange)
+{
+    // Two threads faster, until another run takes a core in the middle of a hold: one
+    // thread takes over after trialCalls calls, not at the hold's end
+    ThreadChooser chooser(2);
+    const std::int64_t change = 10000;
+    const auto cost = [change](int team, std::int64_t k) {
+        return team == 1 ? 1.0e-3 : (k >= change ? 3.0e-3 : 0.6e-3);
+    };
+    std::int64_t k = 0;
+    for (; k < change; ++k) chooser.record(cost(chooser.next(), k));
+    ASSERT_EQ(chooser.next(), 2);
+    // The calls on all threads from the change on, until one thread's first
+    std::int64_t streakOnAll = 0;
+    for (; chooser.next() != 1; ++k, ++streakOnAll) chooser.record(cost(chooser.next(), k));
+    // A hold's last trialCalls calls lose to one thread's as soon as 5 of them took 3 ms, or
+    // trialCalls calls into a new hold
+    EXPECT_LE(streakOnAll, trialCalls);
+    for (const std::int64_t end = k + ThreadChooser::maxHold; k < end; ++k) {
+        chooser.record(cost(chooser.next(), k));
+    }
+    EXPECT_EQ(chooser.next(), 1);
+}
+
+TEST(ThreadChooser, AStepWhoseCostSwingsKeepsTheFasterTeam)
+{
+    // A quiet machine, two threads 1.5 times faster than one, and a step whose cost swings
+    // fourfold as the bed lifts and settles (0.4-1.6 ms on one thread, over 2000 calls): a
+    // hold's calls are slower than one thread was at an earlier trial, and the trial the
+    // watch then calls finds two threads faster again
+    ThreadChooser chooser(2);
+    const double pi = std::acos(-1.0);
+    double spent = 0.0, best = 0.0;
+    for (int k = 0; k < 20000; ++k) {
+        const double one = 1.0e-3 + 0.6e-3 * std::sin(2.0 * pi * k / 2000.0);
+        const double cost = chooser.next() == 1 ? one : one / 1.5;
+        spent += cost;
+        best += one / 1.5;
+        chooser.record(cost);
+    }
+    // Within 5 % of two threads all along: the trials' calls on one thread, 23 each
+    EXPECT_LT(spent, 1.05 * best);
+    EXPECT_GT(chooser.holdsCutShort(), 0);
 }
 
 TEST(ThreadChooser, OneThreadAllowedIsOneThread)

@@ -258,7 +258,9 @@ void Foam::dpmCloud::reportThreads(Ostream& os) const
     const label all = engine_.dem().stepsOnAllThreads();
     os  << "DEM threads (threadChoice measured): " << s.nThreads << " in "
         << all << " CFD steps, one in " << one << " ("
-        << label(100.0*one/max(one + all, label(1))) << "%)" << endl;
+        << label(100.0*one/max(one + all, label(1))) << "%); holds on "
+        << s.nThreads << " ended by a slower step than one thread's: "
+        << engine_.dem().threadHoldsCutShort() << endl;
 }
 
 

@@ -192,9 +192,9 @@ protected:
     // fastest particle's displacement per step u since the last build. A skin s costs a build
     // every s/(2u) steps and candidate pairs in proportion to s, so the cost per step,
     // b s + 2 c u/s, is least at s = sqrt(2 c u/b) = sqrt(skinCostRatio d_min u); the ratio
-    // makes 0.6 mm in the solver's bubbling bed (u ~ 1.2e-5 m per step), where fixed skins
-    // of 0.45-1.0 mm ran alike and 0.15 mm 30 % slower, while a bed at rest goes to the
-    // narrowest skin (docs/performance.md). Within [0.1, 0.8] d_min.
+    // makes about 0.6 mm in the solver's bubbling bed (u ~ 1.2e-5 m per step) and the
+    // narrowest skin in a bed at rest. No fixed skin ran faster (docs/performance.md, NETL's
+    // column; DEM_BENCH_SKIN in BenchSolverBed times others). Within [0.1, 0.8] d_min.
     static constexpr double skinCostRatio = 20.0;          // 2 c / (b d_min)
     static constexpr std::int64_t skinRecheckAfter = 100;  // steps without a build: build, to narrow
     static constexpr double skinMinFraction = 0.1;         // of d_min

@@ -339,6 +339,9 @@ public:
     /// nThreads.
     std::int64_t stepsOnOneThread() const;
     std::int64_t stepsOnAllThreads() const;
+    /// The holds on nThreads ended early, their steps slower than one thread's in the trial
+    /// before (ThreadChooser::holdsCutShort).
+    std::int64_t threadHoldsCutShort() const;
     /// The team the next CFD step (advance) runs its loops on: nThreads, or with
     /// measureThreads the one ThreadChooser picks for it. A caller's own loops around the
     /// step (the coupling's) follow it, so that a neighbour's load that makes one thread

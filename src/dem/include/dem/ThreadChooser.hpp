@@ -19,9 +19,15 @@ public:
     /// sleep or woken) and the next trialCalls are. The team of the smaller mean time, the
     /// slowest call of each left out, runs for a hold of calls, then the next trial; the
     /// block on all threads stops as soon as its calls have taken longer than one thread's
-    /// block. The hold starts at minHold and doubles up to maxHold while the trials keep
-    /// the choice, so that a settled choice costs few trials and a change of the load is
-    /// seen again.
+    /// block. A hold on all threads is watched: once its last trialCalls calls, the slowest
+    /// left out, have taken longer than as many of one thread's in the trial, the hold ends
+    /// and a new trial starts (a trial that caught a quiet moment, or a neighbour that
+    /// started since, keeps two threads slower than one for about trialCalls calls, not a
+    /// hold; a step whose cost changed since the trial is timed again on both teams). Each team's hold
+    /// starts at minHold and doubles up to maxHold each time the team wins a trial, so that a
+    /// settled choice costs few trials and a change of the load is seen again; one thread's
+    /// win, or a hold on all threads ended by its watch, starts all threads' hold over, and
+    /// only a whole hold on all threads one thread's (a trial may catch a quiet moment).
     /// Why the mean: beside a busy core, most calls on two threads are faster than one
     /// thread's, but every few waits a scheduler's time slice for the core its partner
     /// shares (5-100 times as long): a median sees the fast calls and chose two threads at a
@@ -44,14 +50,24 @@ public:
     /// Calls made so far on one thread, and on maxThreads.
     std::int64_t callsOnOne() const { return calls_[0]; }
     std::int64_t callsOnAll() const { return calls_[1]; }
+    /// Holds on all threads ended by their watch.
+    std::int64_t holdsCutShort() const { return holdsCutShort_; }
 
 private:
     int maxThreads_;
     int trial_ = 0;                       // calls made in the current trial; trialLength: none
     std::array<std::array<double, trialCalls>, 2> times_{};   // [one, all][call]
     int chosen_;                          // the team size held
-    std::int64_t hold_ = minHold, heldLeft_ = 0;
+    std::array<std::int64_t, 2> hold_{minHold, minHold};   // [one, all]: the next hold's calls
+    std::int64_t heldLeft_ = 0;
+    double oneMean_ = 0.0;                // one thread's mean call in the last trial, s
+    // The current hold on all threads: its calls so far, the times of the last trialCalls, s
+    std::int64_t watchedCalls_ = 0;
+    std::array<double, trialCalls> watched_{};
+
+    void hold(int team);
     std::array<std::int64_t, 2> calls_{};
+    std::int64_t holdsCutShort_ = 0;
 };
 
 } // namespace dem
