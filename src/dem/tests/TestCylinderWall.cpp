@@ -7,8 +7,10 @@
 // pushes towards its axis only) and stays inside; a radial impact rebounds at the law's
 // restitution in the contact time of a plane's (as TestSlabKernel's head-on cases); a
 // sliding impact takes the Coulomb impulse of the rigid-body result (Maw, Barber & Fawcett
-// 1976; Walton 1993) as the tilted plane of TestSlabKernel. Expected numbers are written
-// here from the geometry and the literature, not taken from the library.
+// 1976; Walton 1993) as the tilted plane of TestSlabKernel; a sphere rolling round the inside
+// under gravity, its contact sticking, loops in the time of a rolling sphere's energy.
+// Expected numbers are written here from the geometry and the literature, not taken from
+// the library.
 
 #include "TestHelpers.hpp"
 #include "dem/SlabSystem.hpp"
@@ -92,13 +94,13 @@ TEST(CylinderWall, FrictionlessElasticSphereKeepsItsEnergyAndStaysInside)
     // small diameters in radius, some 150 impacts in 1.2 s. Outside numbers: its kinetic
     // energy between impacts is the launch's, to 1e-3 over all impacts (as
     // SlabKernel.EnergyConservedWithoutDampingOrFriction): velocity Verlet keeps the energy
-    // of an impact that crosses the curved wall obliquely to first order in dt, 3e-5 per
-    // impact at dt = t_c/200 (the bare integrator on the potential k/2 max(rho - R + r, 0)^2
-    // gives the same), a random walk of 3e-4 here; a wall that pushes towards its axis exerts
-    // no torque about it, and Verlet's kicks and drifts keep such an angular momentum exactly
-    // (round-off: 1e-9); nothing moves the sphere along the axis (1e-12 m); its centre stays
-    // within R - r of the axis plus the peak overlap of a head-on impact at the full speed,
-    // v sqrt(m/kn) (1 % for the step).
+    // of an impact that crosses the curved wall obliquely to 2e-5 per impact at
+    // dt = t_c/200 (the bare integrator on the potential k/2 max(rho - R + r, 0)^2 gives the
+    // same), 3e-4 over the impacts were they to add up as a random walk; a wall that pushes
+    // towards its axis exerts no torque about it, and Verlet's kicks and drifts keep such an
+    // angular momentum exactly (round-off: 1e-9); nothing moves the sphere along the axis
+    // (1e-12 m); its centre stays within R - r of the axis plus the peak overlap of a head-on
+    // impact at the full speed, v sqrt(m/kn) (1 % for the step).
     Cylinder c;
     c.radius = 5e-3;
     const double r = 0.5 * dSmall, m = sphereMass(dSmall), kn = 800.0;
@@ -236,4 +238,88 @@ TEST(CylinderWall, ObliqueSlidingImpactTakesMuTimesTheNormalImpulse)
     const double waExpected = -2.5 * mu * (1.0 + e) * got.vn / r;
     EXPECT_NEAR(got.wa, waExpected, 0.02 * std::abs(waExpected));
     EXPECT_LT(got.across, 1e-9);
+}
+
+TEST(CylinderWall, SphereRollingRoundTheInsideLoopsInTheRollingTime)
+{
+    // Under gravity, across a horizontal axis (along (1, 0, 1), normalised), a sphere rolls
+    // without slipping round the inside of the cylinder, loop after loop: its contact sticks
+    // (the friction it needs, (2/7) m g sin(theta) against the normal m v^2/L + m g cos(theta),
+    // is at most 0.12 of the normal force, mu_w = 0.3), its tangential spring loaded along a
+    // wall whose normal turns a whole turn per loop. Rolling keeps the energy
+    // (7/10) m v^2 + m g h, so v^2 = v_b^2 - (10/7) g L (1 - cos(theta)) about the centre
+    // line at L = R - r, and a loop takes the integral of L / v(theta) over a turn (a
+    // frictionless sphere, v^2 = v_b^2 - 2 g L (1 - cos(theta)), takes 19 % longer here). Launched
+    // rolling at the bottom with v_b^2 = (34/7) g L (the top's normal force m g). Tolerances:
+    // the loop time 1e-3, the contact's overlap moving the centre line by 4e-5 of L; the energy
+    // after five loops 1e-3, the dashpot taking the launch's small normal oscillation; the
+    // contact point's slip along the wall below 1 % of v_b. With rolling resistance on the
+    // pairs alone the wall contacts take the one-by-one loop instead of the batched kernel:
+    // the same numbers.
+    const double r = 0.5 * dSmall, m = sphereMass(dSmall), g = 9.81;
+    const double tc = contactTime(m, 800.0, 0.97);
+    Cylinder c;
+    c.radius = 0.01;
+    c.centre = Vec3(0.0, 0.0, 0.5 * depth);
+    c.axis = Vec3(1.0, 0.0, 1.0).normalized();
+    const double L = c.radius - r;
+    const Vec3 down(0.0, -1.0, 0.0);
+    const Vec3 across = c.axis.cross(down);
+    const double vb2 = 34.0 / 7.0 * g * L;
+    auto speed = [&](double theta, double kinetic) {
+        return std::sqrt(vb2 - 2.0 * g * L * (1.0 - std::cos(theta)) / kinetic);
+    };
+    auto loopTime = [&](double kinetic) {   // midpoint rule, 20000 panels
+        constexpr int n = 20000;
+        double t = 0.0;
+        for (int k = 0; k < n; ++k) t += L / speed(2.0 * pi * (k + 0.5) / n, kinetic);
+        return t * 2.0 * pi / n;
+    };
+    const double rolling = loopTime(1.4), sliding = loopTime(1.0);
+    EXPECT_GT(sliding / rolling, 1.15);
+
+    for (double pairRolling : {0.0, 0.1}) {
+        Settings s = cylinderSettings(c, tc / 50.0);
+        s.gravity[1] = -g;
+        s.contact.frictionWall = 0.3;
+        s.contact.rollingFriction = pairRolling;
+        SlabSystem sim(s);
+        const Vec3 v = std::sqrt(vb2) * across;
+        sim.addParticle(0, c.centre + L * down, v, v.cross(down) / r);   // v + w x (r down) = 0
+        auto angle = [&](const Vec3& p) {
+            const Vec3 o = c.offset(p);
+            return std::atan2(o.dot(across), o.dot(down));
+        };
+        auto energy = [&]() {
+            const SlabParticles& p = sim.particles();
+            return 0.5 * m * p.velocity(0).squaredNorm()
+                   + 0.5 * 0.4 * m * r * r * p.spin(0).squaredNorm()
+                   + m * g * (p.position(0) - c.centre).y();
+        };
+        const double e0 = 0.7 * m * vb2 - m * g * L;
+        double previous = 0.0, before = 0.0, first = -1.0, last = -1.0, worstSlip = 0.0;
+        int loops = 0;
+        while (loops < 5 && sim.time() < 10.0 * rolling) {
+            sim.step(false);
+            const Vec3 p = sim.particles().position(0);
+            const double a = angle(p);
+            if (previous < 0.0 && a >= 0.0) {   // past the bottom
+                const double at = before + (sim.time() - before) * previous / (previous - a);
+                if (first < 0.0) first = at; else { last = at; ++loops; }
+            }
+            previous = a;
+            before = sim.time();
+            const Vec3 out = -c.offset(p).normalized();   // the wall's normal into the domain
+            const Vec3 slip = sim.particles().velocity(0) - (r * sim.particles().spin(0)).cross(out);
+            worstSlip = std::max(worstSlip, (slip - slip.dot(out) * out).norm());
+        }
+        const double measured = (last - first) / loops;
+        std::printf("  pair rolling %.1f: %d loops of %.6g s (rolling %.6g s, sliding %.6g s), "
+                    "energy %.6g of the launch's, slip %.3g m/s\n",
+                    pairRolling, loops, measured, rolling, sliding, energy() / e0, worstSlip);
+        EXPECT_EQ(loops, 5) << "pair rolling " << pairRolling;
+        EXPECT_NEAR(measured, rolling, 1e-3 * rolling) << "pair rolling " << pairRolling;
+        EXPECT_NEAR(energy() / e0, 1.0, 1e-3) << "pair rolling " << pairRolling;
+        EXPECT_LT(worstSlip, 0.01 * std::sqrt(vb2)) << "pair rolling " << pairRolling;
+    }
 }
