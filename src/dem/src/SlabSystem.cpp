@@ -180,10 +180,11 @@ Vec3 SlabSystem::wallForce(int w) const
     for (std::size_t i = 0; i + 1 < wallContacts_.start.size(); ++i) {
         for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
             if (wallContacts_.wall[s] != w) continue;
-            const WallSide side = wallSide(w, p_.position(i));
             const double ri = p_.radius[i];
+            // Touching first, as the rolling limit: a candidate's normal may be undefined
+            if (ri - wallDistance(w, p_.position(i)) <= 0.0) continue;
+            const WallSide side = wallSide(w, p_.position(i));
             const double overlap = ri - side.distance;
-            if (overlap <= 0.0) continue;
             PairGeometry3 c;
             c.overlap = overlap;
             c.nHat = -side.nHat;

@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cfenv>
 #include <cmath>
 #include <cstdio>
 
@@ -321,5 +322,38 @@ TEST(CylinderWall, SphereRollingRoundTheInsideLoopsInTheRollingTime)
         EXPECT_NEAR(measured, rolling, 1e-3 * rolling) << "pair rolling " << pairRolling;
         EXPECT_NEAR(energy() / e0, 1.0, 1e-3) << "pair rolling " << pairRolling;
         EXPECT_LT(worstSlip, 0.01 * std::sqrt(vb2)) << "pair rolling " << pairRolling;
+    }
+}
+
+TEST(CylinderWall, ASphereOnTheAxisRaisesNoInvalidOperation)
+{
+    // The cylinder's normal is undefined on its axis (0/0). A sphere there does not touch the
+    // wall (the radius is at least its diameter), but it is a candidate of the wall's
+    // contacts when the radius is under its own plus the skin: a cylinder of radius d, the
+    // skin 0.75 d. The loops that read a contact's normal read it of touching contacts alone,
+    // so a step, with rolling resistance and without, and the wall's force raise no invalid
+    // operation (which the solver traps), and the sphere feels no force from the wall. One
+    // thread: the flags are the calling thread's.
+    const double d = 2e-3;
+    for (double rollingWall : {0.0, 0.1}) {
+        Settings s = paperSettings({0.0, 2.0 * d, 0.0, 0.01});
+        s.classes = {{"one", d, rho}};
+        s.dimension = 3;
+        s.slabDepth = 2.0 * d;
+        s.gravity[1] = -9.81;
+        s.nThreads = 1;
+        s.neighbourSkin = 0.75 * d;
+        s.contact.rollingFrictionWall = rollingWall;
+        s.walls = {WallSettings::plane({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}),
+                   WallSettings::cylinder({d, 0.0, d}, {0.0, 1.0, 0.0}, d)};
+        SlabSystem sim(s);
+        sim.addParticle(0, Vec3(d, 0.005, d), Vec3::Zero());
+        std::feclearexcept(FE_ALL_EXCEPT);
+        sim.step(false);
+        const Vec3 force = sim.wallForce(1);
+        EXPECT_EQ(std::fetestexcept(FE_INVALID), 0) << "rolling resistance " << rollingWall;
+        EXPECT_EQ(force, Vec3::Zero()) << "rolling resistance " << rollingWall;
+        EXPECT_EQ(sim.particles().position(0).x(), d);
+        EXPECT_EQ(sim.particles().position(0).z(), d);
     }
 }
