@@ -325,7 +325,7 @@ TEST(CylinderWall, SphereRollingRoundTheInsideLoopsInTheRollingTime)
     }
 }
 
-TEST(CylinderWall, ASphereOnTheAxisRaisesNoInvalidOperation)
+TEST(CylinderContacts, ASphereOnTheAxisRaisesNoInvalidOperation)
 {
     // The cylinder's normal is undefined on its axis (0/0). A sphere there does not touch the
     // wall (the radius is at least its diameter), but it is a candidate of the wall's
