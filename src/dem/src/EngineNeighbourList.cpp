@@ -135,10 +135,12 @@ void EngineBase<Derived, Traits>::rebuildNeighbourList()
     }
 
     // Walls: candidates within radius + skin, history carried over by (particle, wall);
-    // counted per particle, then filled, both in parallel.
-    const int nWalls = static_cast<int>(walls_.size());
+    // counted per particle, then filled, both in parallel. The engine's walls by its
+    // wallCount and wallDistance: a plane's or a cylinder's distance changes by at most the
+    // particle's displacement, which the skin covers until the next build.
+    const int nWalls = derived().wallCount();
     auto isCandidate = [&](int i, int w) {
-        return walls_[w].distance(Traits::position(p_, i)) < p_.radius[i] + skin_;
+        return derived().wallDistance(w, Traits::position(p_, i)) < p_.radius[i] + skin_;
     };
     WallListT<History> next;
     next.start.assign(n + 1, 0);

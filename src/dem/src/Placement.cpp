@@ -1,10 +1,12 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Laying a bed recipe's placed particles (Placement.hpp): fixed positions checked, random
-// ones drawn on the region's floor, apart from the positions' stream of the packing.
+// ones drawn on the region's floor, apart from the positions' stream of the packing; in 3D
+// both clear of the walls of Settings::walls too.
 
 #include "Placement.hpp"
 
+#include "SlabWalls.hpp"
 #include "dem/Random.hpp"
 
 #include <algorithm>
@@ -128,6 +130,13 @@ std::vector<LaidParticle> layPlacedParticles(const Settings& s, const BedRecipe&
                                                     + formatValue(depth - r) + "]" : std::string())
                                 + " m");
                 }
+                const int wall = slab ? wallPokedThrough(s, {p.x, p.y, p.z}, r) : -1;
+                if (wall >= 0) {
+                    throw Error(what + " at " + positionText(p, slab) + " is not clear of "
+                                + wallEntryName(s, static_cast<std::size_t>(wall)) + " by its "
+                                "radius " + formatValue(r) + " m: "
+                                + wallAllowance(s, static_cast<std::size_t>(wall), r));
+                }
                 const int other = overlapped(laid, p, d, slab);
                 if (other >= 0) {
                     throw Error(what + " at " + positionText(p, slab) + " overlaps the one at "
@@ -145,6 +154,7 @@ std::vector<LaidParticle> layPlacedParticles(const Settings& s, const BedRecipe&
                 p.y = region.yMin + r;
                 p.z = slab ? random.uniform(r, depth - r) : 0.0;
                 if (overlapped(laid, p, d, slab) >= 0) continue;
+                if (slab && wallPokedThrough(s, {p.x, p.y, p.z}, r) >= 0) continue;
                 laid.push_back({k, d, p});
                 done = true;
             }

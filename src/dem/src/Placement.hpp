@@ -18,7 +18,8 @@ struct LaidParticle {
 };
 
 /// The recipe's placed particles laid out in their order, each clear of the walls (the
-/// region's sides and floor, the slab's front and back in 3D) and of those before it; their
+/// region's sides and floor, the slab's front and back and Settings::walls in 3D) and of
+/// those before it; their
 /// diameters the first of their classes' drawClassDiameters. `drawn[k]` is set to the number
 /// of class k's diameters they take. Throws dem::Error naming the placed particle (its
 /// number, class and position) and the allowed range: a class outside the classes, more

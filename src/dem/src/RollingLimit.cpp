@@ -84,11 +84,14 @@ template <class Law> void SlabSystem::limitRollingTorques()
         const auto [first, last] = threadShare(n);
         for (Index i = first; i < last; ++i) {
             for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
-                const PlaneWall3& wall = walls_[wallContacts_.wall[s]];
-                const double overlap = p.radius[i] - wall.distance(p.position(i));
-                if (overlap <= 0.0) continue;
+                // Touching first: a candidate's normal may be undefined (a sphere on a
+                // cylinder's axis, 0/0), a touching sphere's is not
+                const Vec3 position = p.position(i);
+                if (p.radius[i] - wallDistance(wallContacts_.wall[s], position) <= 0.0) continue;
+                const WallSide side = wallSide(wallContacts_.wall[s], position);
+                const double overlap = p.radius[i] - side.distance;
                 const ContactLaw& law = wallLaws_[p.classIndex[i]];
-                const PairGeometry3 c = wallGeometry(p, i, wall, overlap);
+                const PairGeometry3 c = wallGeometry(p, i, side.nHat, overlap);
                 const double fn = Law::at(overlap, c.vRel.dot(c.nHat), law).fn;
                 share[i] += rollingResistance(c, fn, law).coefficient * dt * p.invInertia[i];
             }

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "dem/System.hpp"
 
+#include "SlabWalls.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -262,6 +264,7 @@ void validateSettings(const Settings& s)
                         "largest diameter");
         }
     }
+    validateWalls(s);
 
     requirePositive(s.dt, "dt");
     checkTimeStep(s);

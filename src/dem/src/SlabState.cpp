@@ -1,9 +1,11 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The slab's random packing and its state file: everything the next step reads (particles,
-// forces of the last evaluation, the neighbour list in its order with the 3-vector
-// histories, the wall contacts, the reference positions), so a restart continues bit for
-// bit. A file of its own kind: a 2D state and a slab state cannot be mistaken for each other.
+// The slab's state file: everything the next step reads (particles, forces of the last
+// evaluation, the neighbour list in its order with the 3-vector histories, the plane walls
+// and the wall contacts, the reference positions), so a restart continues bit for bit. The
+// walls of Settings::walls, cylinders included, are in the settings key (appendWallsRecord),
+// so a state is read with the walls it was made with. A file of its own kind: a 2D state
+// and a slab state cannot be mistaken for each other.
 // It holds the caller's record of the run (its models, runRecord()), the recipe of a packed
 // bed, so that a case starting from it checks every entry of how it was made, the skin and
 // the step of the last list build (the adaptive skin's state), and a checksum (64-bit
@@ -12,9 +14,9 @@
 // read, an older one (1-6) is refused naming the command that converts it.
 
 #include "RecordCompare.hpp"
+#include "SlabWalls.hpp"
 #include "StateIntegrity.hpp"
 #include "dem/StateConversion.hpp"
-#include "dem/Random.hpp"
 #include "dem/SlabSystem.hpp"
 #include "dem/StateRecord.hpp"
 #include "dem/System.hpp"
@@ -27,7 +29,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <numeric>
 #include <type_traits>
 
 namespace dem {
@@ -42,121 +43,11 @@ std::vector<double> slabKey(const Settings& s)
     std::vector<double> key = settingsKey(s, 0.0);
     key.pop_back();   // the skin: a state may continue with another
     key.push_back(s.slabDepth);
+    appendWallsRecord(key, s);
     return key;
 }
 
 } // namespace
-
-void SlabSystem::packRandom(const std::vector<int>& countPerClass, const Box& region,
-                            std::uint64_t seed)
-{
-    packRest(countPerClass, region, seed, std::vector<int>(settings_.classes.size(), 0));
-}
-
-void SlabSystem::appendAtRest(int cls, double d, const Vector3& position)
-{
-    checkClass(cls);
-    p_.append(cls, d, settings_.classes[cls].density,
-              Eigen::Vector3d(position.x, position.y, position.z), Eigen::Vector3d::Zero(),
-              Eigen::Vector3d::Zero());
-    listValid_ = false;
-    forcesValid_ = false;
-}
-
-void SlabSystem::packRest(const std::vector<int>& countPerClass, const Box& region,
-                          std::uint64_t seed, const std::vector<int>& drawnBefore)
-{
-    recipe_.reset();   // packBed sets it once the bed has settled
-    if (static_cast<int>(countPerClass.size()) != nClasses_) {
-        throw Error("countPerClass has " + std::to_string(countPerClass.size())
-                    + " entries, outside [" + std::to_string(nClasses_) + ", "
-                    + std::to_string(nClasses_) + "] (one per size class)");
-    }
-    const Box& b = settings_.box;
-    if (!(region.xMin >= b.xMin && region.xMax <= b.xMax && region.yMin >= b.yMin
-          && region.yMax <= b.yMax && region.xMax > region.xMin && region.yMax > region.yMin)) {
-        throw Error("packing region is outside the box");
-    }
-    double dMax = 0.0;
-    for (const auto& c : settings_.classes) dMax = std::max(dMax, largestDiameter(c));
-
-    // Bins of dMax in x-y through the whole depth (the slab is a few diameters deep).
-    const int nx = std::max(1, static_cast<int>((b.xMax - b.xMin) / dMax));
-    const int ny = std::max(1, static_cast<int>((b.yMax - b.yMin) / dMax));
-    std::vector<std::vector<int>> bins(static_cast<std::size_t>(nx) * ny);
-    auto column = [&](double x) { return std::clamp(static_cast<int>((x - b.xMin) / dMax), 0, nx - 1); };
-    auto row = [&](double y) { return std::clamp(static_cast<int>((y - b.yMin) / dMax), 0, ny - 1); };
-    std::vector<Eigen::Vector3d> pos;
-    std::vector<double> rad;
-    std::vector<int> cls;
-    std::vector<double> diam;   // the new particles' diameters, from firstNew
-    for (std::size_t k = 0; k < p_.size(); ++k) {
-        bins[row(p_.y[k]) * nx + column(p_.x[k])].push_back(static_cast<int>(pos.size()));
-        pos.push_back(p_.position(k));
-        rad.push_back(p_.radius[k]);
-        cls.push_back(-1);
-    }
-    const std::size_t firstNew = pos.size();
-
-    const std::vector<int> order = classesLargestFirst(settings_);
-    Random random(seed);
-    constexpr int maxAttempts = 100000;
-    const double depth = settings_.slabDepth;
-    for (int k : order) {
-        const std::vector<double> diameters = restOfClass(settings_.classes[k], k, drawnBefore[k],
-                                                          countPerClass[k], seed);
-        for (int count = 0; count < countPerClass[k]; ++count) {
-            const double r = 0.5 * diameters[count];
-            bool placed = false;
-            for (int attempt = 0; attempt < maxAttempts && !placed; ++attempt) {
-                const Eigen::Vector3d q(random.uniform(region.xMin + r, region.xMax - r),
-                                        random.uniform(region.yMin + r, region.yMax - r),
-                                        random.uniform(r, depth - r));
-                const int c = column(q.x()), rr = row(q.y());
-                bool blocked = false;
-                for (int y = std::max(0, rr - 1); y <= std::min(ny - 1, rr + 1) && !blocked; ++y) {
-                    for (int x = std::max(0, c - 1); x <= std::min(nx - 1, c + 1) && !blocked; ++x) {
-                        for (int o : bins[y * nx + x]) {
-                            const double reach = rad[o] + r;
-                            if ((pos[o] - q).squaredNorm() < reach * reach) {
-                                blocked = true;
-                                break;
-                            }
-                        }
-                    }
-                }
-                if (blocked) continue;
-                bins[rr * nx + c].push_back(static_cast<int>(pos.size()));
-                pos.push_back(q);
-                rad.push_back(r);
-                cls.push_back(k);
-                diam.push_back(diameters[count]);
-                placed = true;
-            }
-            if (!placed) {
-                throw Error("packRandom: no room for particle " + std::to_string(count + 1) + " of "
-                            + std::to_string(countPerClass[k]) + " of class '"
-                            + settings_.classes[k].name + "' after " + std::to_string(maxAttempts)
-                            + " attempts; make the packing region larger");
-            }
-        }
-    }
-    // Numbered in horizontal bands bottom to top, as System::packRandom (cache locality).
-    std::vector<std::size_t> rank(pos.size() - firstNew);
-    std::iota(rank.begin(), rank.end(), firstNew);
-    auto band = [&](std::size_t q) { return static_cast<long>((pos[q].y() - region.yMin) / dMax); };
-    std::sort(rank.begin(), rank.end(), [&](std::size_t a, std::size_t c) {
-        if (band(a) != band(c)) return band(a) < band(c);
-        if (pos[a].x() != pos[c].x()) return pos[a].x() < pos[c].x();
-        return a < c;
-    });
-    for (std::size_t q : rank) {
-        p_.append(cls[q], diam[q - firstNew], settings_.classes[cls[q]].density,
-                  pos[q], Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
-    }
-    listValid_ = false;
-    forcesValid_ = false;
-}
 
 void SlabSystem::save(const std::string& path) const
 {
@@ -271,14 +162,20 @@ void SlabSystem::load(const std::string& path)
     const std::vector<double> here = slabKey(settings_);
     if (key != here) {
         // The key as the disc engine's with the depth in the skin's place, which the
-        // comparison leaves out: named on its own
-        std::vector<Difference> differ = compareSettingsKeys(key, here, settings_);
+        // comparison leaves out: named on its own, as the walls after it
+        const SplitKey fileKey = splitWallsRecord(key);
+        const SplitKey hereKey = splitWallsRecord(here);
+        const std::vector<double>& a = fileKey.rest;
+        const std::vector<double>& b = hereKey.rest;
+        std::vector<Difference> differ = compareSettingsKeys(a, b, settings_);
         // A mesh numbered otherwise puts the depth a last digit apart too
-        const double extent = std::max(extentOf(settings_.box), here.back());
-        if (!key.empty() && key[0] == here[0]
-            && !sameCoordinate(key.back(), here.back(), extent)) {
-            const auto [inFile, asked] = textsApart(key.back(), here.back());
+        const double extent = std::max(extentOf(settings_.box), b.back());
+        if (!a.empty() && a[0] == b[0] && !sameCoordinate(a.back(), b.back(), extent)) {
+            const auto [inFile, asked] = textsApart(a.back(), b.back());
             differ.push_back({"slabDepth", inFile + " m", asked + " m"});
+        }
+        for (const Difference& d : compareWallsRecords(fileKey.walls, hereKey.walls)) {
+            differ.push_back(d);
         }
         if (!differ.empty()) {
             throw Error("slab state file '" + path + "' was written with other settings: "
@@ -325,7 +222,11 @@ void SlabSystem::load(const std::string& path)
     const bool sameSkin = fileSkin == t.skin_;
     std::vector<double> wallData;
     array(wallData);
-    if (wallData.size() % 6 != 0 || wallData.size() < 36) fail("a bad wall list");
+    // The planes (the cylinders are the settings', which the key holds): at least the
+    // settings' own, and those added by addWall
+    if (wallData.size() % 6 != 0 || wallData.size() < 6 * planeWalls(settings_).size()) {
+        fail("a bad wall list");
+    }
     t.walls_.clear();
     for (std::size_t k = 0; k < wallData.size(); k += 6) {
         t.walls_.push_back({Eigen::Vector3d(wallData[k], wallData[k + 1], wallData[k + 2]),
@@ -356,8 +257,7 @@ void SlabSystem::load(const std::string& path)
                  && t.pairs_.law[k] < nClasses_ * nClasses_;
     }
     for (std::size_t k = 0; listOk && k < nw; ++k) {
-        listOk = t.wallContacts_.wall[k] >= 0
-                 && static_cast<std::size_t>(t.wallContacts_.wall[k]) < t.walls_.size();
+        listOk = t.wallContacts_.wall[k] >= 0 && t.wallContacts_.wall[k] < t.wallCount();
     }
     listOk = listOk && (ready == 0 || (t.pairs_.groupStart.size() == nPairGroups + 1
                                        && t.wallContacts_.start.size() == n + 1

@@ -1,20 +1,19 @@
 // SPDX-FileCopyrightText: 2026 The dpmFoam2D authors
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The slab mode's engine: System's step with 3-vectors and the 3D contact kernel (its pair
-// forces in SlabPairForces.cpp).
+// forces in SlabPairForces.cpp, its wall forces and kick in SlabWallForces.cpp).
 
 #include "dem/SlabSystem.hpp"
 #include "dem/Particles.hpp"
 #include "dem/System.hpp"
 
 #include "PairGroups.hpp"
+#include "SlabWalls.hpp"
 #include "StreamingLoops.hpp"
-#include "WallGeometry.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <type_traits>
 
 namespace dem {
 
@@ -43,31 +42,6 @@ inline bool insideSlab(double x, double y, double z, const Box& b, double depth)
 
 } // namespace
 
-std::vector<PlaneWall3> slabWalls(const Box& box, double depth)
-{
-    return {
-        {Vec3(box.xMin, box.yMin, 0.0), Vec3(0.0, 1.0, 0.0)},    // floor
-        {Vec3(box.xMax, box.yMin, 0.0), Vec3(-1.0, 0.0, 0.0)},   // right
-        {Vec3(box.xMin, box.yMax, 0.0), Vec3(0.0, -1.0, 0.0)},   // ceiling
-        {Vec3(box.xMin, box.yMin, 0.0), Vec3(1.0, 0.0, 0.0)},    // left
-        {Vec3(box.xMin, box.yMin, 0.0), Vec3(0.0, 0.0, 1.0)},    // front, z = 0
-        {Vec3(box.xMin, box.yMin, depth), Vec3(0.0, 0.0, -1.0)}, // back, z = depth
-    };
-}
-
-namespace {
-
-// The name of wall w in messages: the slab's six in slabWalls' order, then added ones.
-std::string wallName(std::size_t w)
-{
-    static const char* const names[] = {"the floor (y = yMin)", "the right wall (x = xMax)",
-                                        "the ceiling (y = yMax)", "the left wall (x = xMin)",
-                                        "the front wall (z = 0)", "the back wall (z = slabDepth)"};
-    return w < 6 ? names[w] : "added wall " + std::to_string(w);
-}
-
-} // namespace
-
 void SlabParticles::append(int cls, double diam, double density, const Vec3& pos, const Vec3& vel,
                            const Vec3& w)
 {
@@ -84,8 +58,9 @@ void SlabParticles::append(int cls, double diam, double density, const Vec3& pos
 }
 
 SlabSystem::SlabSystem(const Settings& settings)
-    : EngineBase(validatedSlab(settings), slabWalls(settings.box, settings.slabDepth),
-                 skinStartFraction, settings.neighbourSkin < 0.0)
+    : EngineBase(validatedSlab(settings), planeWalls(settings), skinStartFraction,
+                 settings.neighbourSkin < 0.0),
+      cylinders_(cylinderWalls(settings))
 {
 }
 
@@ -95,6 +70,9 @@ void SlabSystem::addWall(const Vec3& point, const Vec3& normal)
     if (!(length > 0.0) || !std::isfinite(length)) {
         throw Error("wall normal of length " + formatValue(length) + " is outside (0, inf)");
     }
+    // After the planes: the cylinders' contacts move up one, their history with them
+    const int planes = static_cast<int>(walls_.size());
+    for (int& w : wallContacts_.wall) w += w >= planes;
     walls_.push_back({point, normal / length});
     listValid_ = false;
     forcesValid_ = false;
@@ -105,12 +83,16 @@ void SlabSystem::addParticle(int cls, const Vec3& pos, const Vec3& vel, const Ve
     checkClass(cls);
     const double d = meanDiameter(settings_.classes[cls]);   // a distribution's mean
     const double r = 0.5 * d;
-    for (std::size_t w = 0; w < walls_.size(); ++w) {
-        if (!(walls_[w].distance(pos) >= r - 0.01 * d)) {
+    const int planes = static_cast<int>(walls_.size());
+    for (int w = 0; w < wallCount(); ++w) {
+        const double clearance = r - 0.01 * d;
+        if (!(wallDistance(w, pos) >= clearance)) {
             throw Error("particle of class '" + settings_.classes[cls].name + "' at ("
                         + formatValue(pos.x()) + ", " + formatValue(pos.y()) + ", "
-                        + formatValue(pos.z()) + ") m pokes through " + wallName(w)
-                        + " by more than 1 % of its diameter");
+                        + formatValue(pos.z()) + ") m pokes through "
+                        + slabWallName(settings_, w, planes) + " by more than 1 % of its "
+                        "diameter: "
+                        + wallAllowance(clearance, w < planes ? nullptr : &cylinders_[w - planes]));
         }
     }
     for (std::size_t k = 0; k < p_.size(); ++k) {
@@ -127,145 +109,6 @@ void SlabSystem::addParticle(int cls, const Vec3& pos, const Vec3& vel, const Ve
     listValid_ = false;
     forcesValid_ = false;
     recipe_.reset();   // the particles are no longer the recipe's alone
-}
-
-void SlabSystem::addWallForcesAndKick(double historyDt, bool kick, bool fluid)
-{
-    withContactLaw([&](auto law, auto rolling) {
-        addWallForcesAndKickWith<decltype(law), decltype(rolling)::value>(historyDt, kick, fluid);
-    });
-}
-
-template <class Law>
-void SlabSystem::batchedWallForces(const WallPick* picked, int m, double historyDt,
-                                   std::size_t& touching, double& maxOverlap)
-{
-    constexpr bool hertz = std::is_same_v<Law, HertzMindlin>;
-    static_assert(hertz || std::is_same_v<Law, LinearSpringDashpot>,
-                  "a law needs its version of the batched kernel (SlabPairKernel.cpp)");
-    const SlabPairLoop kernel =
-        hertz ? streamingLoops().slabHertzWalls : streamingLoops().slabLinearWalls;
-    SlabParticles& p = p_;
-    Vec3* wXi = wallContacts_.xi.data();
-    SlabPairBatch b;
-    for (int first = 0; first < m; first += SlabPairBatch::capacity) {
-        const int count = std::min(m - first, SlabPairBatch::capacity);
-        for (int q = 0; q < count; ++q) {
-            const auto [s, i] = picked[first + q];
-            const double ri = p.radius[i];
-            const PlaneWall3& wall = walls_[wallContacts_.wall[s]];
-            // As contactForce's caller: nHat = -wall.nHat, v_i + (r_i w_i) x nHat
-            b.overlap[q] = ri - wall.distance(p.position(i));
-            b.nx[q] = -wall.nHat.x();
-            b.ny[q] = -wall.nHat.y();
-            b.nz[q] = -wall.nHat.z();
-            b.dvx[q] = p.vx[i];
-            b.dvy[q] = p.vy[i];
-            b.dvz[q] = p.vz[i];
-            b.sx[q] = ri * p.wx[i];
-            b.sy[q] = ri * p.wy[i];
-            b.sz[q] = ri * p.wz[i];
-            b.xix[q] = wXi[s].x();
-            b.xiy[q] = wXi[s].y();
-            b.xiz[q] = wXi[s].z();
-            b.setLaw(q, wallLaws_[p.classIndex[i]], hertz);
-        }
-        kernel(b, count, historyDt);
-        for (int q = 0; q < count; ++q) {
-            const auto [s, i] = picked[first + q];
-            const double ri = p.radius[i];
-            p.fx[i] += b.fx[q]; p.fy[i] += b.fy[q]; p.fz[i] += b.fz[q];
-            p.tx[i] += ri * b.nxFx[q]; p.ty[i] += ri * b.nxFy[q]; p.tz[i] += ri * b.nxFz[q];
-            wXi[s] = Vec3(b.xix[q], b.xiy[q], b.xiz[q]);
-            maxOverlap = std::max(maxOverlap, b.overlap[q]);
-        }
-        touching += static_cast<std::size_t>(count);
-    }
-}
-
-template <class Law, bool Rolling>
-void SlabSystem::addWallForcesAndKickWith(double historyDt, bool kick, bool fluid)
-{
-    const Index n = static_cast<Index>(p_.size());
-    const double h = 0.5 * settings_.dt;
-    const double weight = meanWeight_;
-    const int* wStart = wallContacts_.start.data();
-    const int* wWall = wallContacts_.wall.data();
-    Vec3* wXi = wallContacts_.xi.data();
-    const PlaneWall3* walls = walls_.data();
-    const ContactLaw* wallLaws = wallLaws_.data();
-    SlabParticles& p = p_;
-
-    wallPicks_.resize(wallContacts_.size());
-
-    // The second half-kick (StreamingLoops.hpp) after the wall contacts
-    const SlabKickArrays kickArrays{
-        wStart,
-        p.fx.data(), p.fy.data(), p.fz.data(), p.radius.data(), p.invMass.data(),
-        p.invInertia.data(), p.dragCoefficient.data(),
-        p.gasVx.data(), p.gasVy.data(), p.gasVz.data(),
-        p.extraFx.data(), p.extraFy.data(), p.extraFz.data(),
-        p.tx.data(), p.ty.data(), p.tz.data(),
-        p.vx.data(), p.vy.data(), p.vz.data(),
-        p.wx.data(), p.wy.data(), p.wz.data(),
-        p.fluidX.data(), p.fluidY.data(), p.fluidZ.data(),
-        p.meanVx.data(), p.meanVy.data(), p.meanVz.data()};
-    const SlabKickLoop kickLoop = streamingLoops().slabSecondHalfKick;
-    const KickMode mode = kickMode(kick, fluid);
-    const double gx = settings_.gravity[0];
-    const double gy = settings_.gravity[1];
-
-    std::size_t touching = 0;
-    double maxOverlap = maxOverlap_;
-#pragma omp parallel num_threads(threads_) reduction(+ : touching) \
-    reduction(max : maxOverlap)
-    {
-        // As System's: each thread its own range of particles for every loop (no barrier
-        // between them), the wall contacts first, then every particle's kick, vectorised.
-        const auto [first, last] = threadShare(n);
-        // Two passes, as the pair loop's: the touching wall contacts picked out without a
-        // jump (every sphere of a thin slab has the front and back walls as candidates, and
-        // a jump on touching mispredicted), each particle's torque made whole (r ft + the
-        // wall torques); then the touching contacts' forces and torques, added in wall order
-        WallPick* picked = wallPicks_.data() + wStart[first];
-        int m = 0;
-        for (Index i = first; i < last; ++i) {
-            if (wStart[i] == wStart[i + 1]) continue;
-            const double ri = p.radius[i];
-            p.tx[i] *= ri;
-            p.ty[i] *= ri;
-            p.tz[i] *= ri;
-            const Vec3 pos = p.position(i);
-            for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
-                const bool touch = !(ri - walls[wWall[s]].distance(pos) <= 0.0);
-                picked[m] = {s, static_cast<int>(i)};
-                m += touch;
-                wXi[s] = selectWithoutBranch(touch, wXi[s], Vec3::Zero());
-            }
-        }
-        if constexpr (Rolling) {
-            for (int q = 0; q < m; ++q) {
-                const auto [s, i] = picked[q];
-                const double ri = p.radius[i];
-                const PlaneWall3& wall = walls[wWall[s]];
-                PairGeometry3 c = wallGeometry(p, i, wall, ri - wall.distance(p.position(i)));
-                c.xiT = wXi[s];
-                const PairForce3 f = contactForce<3, Law, true>(c, wallLaws[p.classIndex[i]], historyDt);
-                p.fx[i] += f.force.x(); p.fy[i] += f.force.y(); p.fz[i] += f.force.z();
-                // The rolling part scaled by the particle's limit (limitRollingTorques)
-                const Vec3 torque = f.torqueI + (rollingScale_[i] - 1.0) * f.rollingTorque;
-                p.tx[i] += torque.x(); p.ty[i] += torque.y(); p.tz[i] += torque.z();
-                wXi[s] = f.xiT;
-                ++touching;
-                maxOverlap = std::max(maxOverlap, c.overlap);
-            }
-        } else {
-            batchedWallForces<Law>(picked, m, historyDt, touching, maxOverlap);
-        }
-        kickLoop(kickArrays, first, last, h, gx, gy, weight, mode);
-    }
-    contactCount_ += touching;
-    maxOverlap_ = maxOverlap;
 }
 
 double SlabSystem::drift()
@@ -321,7 +164,7 @@ double SlabSystem::elasticEnergy() const
         }
         for (std::size_t i = 0; i + 1 < wallContacts_.start.size(); ++i) {
             for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
-                const double overlap = p_.radius[i] - walls_[wallContacts_.wall[s]].distance(p_.position(i));
+                const double overlap = p_.radius[i] - wallDistance(wallContacts_.wall[s], p_.position(i));
                 if (overlap > 0.0) {
                     energy += Law::elasticEnergy(overlap, wallContacts_.xi[s], wallLaws_[p_.classIndex[i]]);
                 }
@@ -337,13 +180,14 @@ Vec3 SlabSystem::wallForce(int w) const
     for (std::size_t i = 0; i + 1 < wallContacts_.start.size(); ++i) {
         for (int s = wallContacts_.start[i]; s < wallContacts_.start[i + 1]; ++s) {
             if (wallContacts_.wall[s] != w) continue;
-            const PlaneWall3& wall = walls_[w];
             const double ri = p_.radius[i];
-            const double overlap = ri - wall.distance(p_.position(i));
-            if (overlap <= 0.0) continue;
+            // Touching first, as the rolling limit: a candidate's normal may be undefined
+            if (ri - wallDistance(w, p_.position(i)) <= 0.0) continue;
+            const WallSide side = wallSide(w, p_.position(i));
+            const double overlap = ri - side.distance;
             PairGeometry3 c;
             c.overlap = overlap;
-            c.nHat = -wall.nHat;
+            c.nHat = -side.nHat;
             c.vRel = p_.velocity(i) + (ri * p_.spin(i)).cross(c.nHat);
             c.rI = ri;
             c.rJ = 0.0;

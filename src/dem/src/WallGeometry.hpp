@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A touching wall contact of particle i as contactForce sees it (internal): the normal from
-// the particle into the wall, the contact point's velocity v_i + (r_i w_i) x nHat, the
-// particle's spin as the relative rolling; the history is the caller's to set.
+// the particle into the wall, the contact point's velocity v_i + (r_i w_i) x nHat (the wall
+// at rest), the particle's spin as the relative rolling; the history is the caller's to set.
 
 #include "dem/ContactKernel.hpp"
 #include "dem/Particles.hpp"
@@ -29,13 +29,15 @@ inline PairGeometry wallGeometry(const Particles& p, std::size_t i, const PlaneW
     return g;
 }
 
-inline PairGeometry3 wallGeometry(const SlabParticles& p, std::size_t i, const PlaneWall3& w,
-                                  double overlap)
+/// In 3D of the wall's normal at the contact, pointing into the domain (WallSide::nHat: a
+/// plane's own, a cylinder's towards its axis).
+inline PairGeometry3 wallGeometry(const SlabParticles& p, std::size_t i,
+                                  const Eigen::Vector3d& wallNHat, double overlap)
 {
     const double ri = p.radius[i];
     PairGeometry3 c;
     c.overlap = overlap;
-    c.nHat = -w.nHat;
+    c.nHat = -wallNHat;
     c.vRel = p.velocity(i) + (ri * p.spin(i)).cross(c.nHat);
     c.rI = ri;
     c.rJ = 0.0;

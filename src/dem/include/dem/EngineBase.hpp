@@ -7,7 +7,8 @@
 // Templated on the engine (CRTP) and on its Traits: the particle arrays, the wall type, the
 // contact history (a scalar along tHat in 2D, a 3-vector in 3D) and the few per-dimension
 // expressions. Each engine keeps what differs: the drift, the pair and wall forces with the
-// second half-kick (disc against sphere kinematics), the packing and the state file.
+// second half-kick (disc against sphere kinematics), the packing and the state file, and
+// its walls as the list build tests them (wallCount(), wallDistance(w, x)).
 //
 // Traits provide:
 //   using Particles, Wall, History;

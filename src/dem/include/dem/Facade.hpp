@@ -6,6 +6,7 @@
 
 #include "dem/Diameters.hpp"
 #include "dem/Error.hpp"
+#include "dem/StepBounds.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -106,6 +107,28 @@ struct Vector3 {
     double x = 0.0, y = 0.0, z = 0.0;
 };
 
+/// The shape of a wall of the slab mode (Settings::walls).
+enum class WallShape { plane, cylinder };
+
+/// A wall of the slab mode: an infinite plane through `point` whose normal points into the
+/// domain, or an infinite cylinder around the axis through `point`, the particles inside it.
+struct WallSettings {
+    WallShape shape = WallShape::plane;
+    Vector3 point;          ///< plane: a point on it; cylinder: a point on the axis, m
+    Vector3 normal;         ///< plane: pointing into the domain, of any length > 0
+    Vector3 axis;           ///< cylinder: its unit direction (to 1e-6), either sense
+    double radius = 0.0;    ///< cylinder: m, >= the largest diameter
+
+    static WallSettings plane(const Vector3& point, const Vector3& normal)
+    {
+        return {WallShape::plane, point, normal, {}, 0.0};
+    }
+    static WallSettings cylinder(const Vector3& point, const Vector3& axis, double radius)
+    {
+        return {WallShape::cylinder, point, {}, axis, radius};
+    }
+};
+
 /// Everything needed to build a Simulation.
 struct Settings {
     std::vector<ParticleClass> classes;
@@ -125,11 +148,16 @@ struct Settings {
     /// the state, so restarts continue bit for bit); the slab's default is a fixed 0.1 d_min.
     double neighbourSkin = -1.0;
     /// 2: discs in the x-y plane (the paper's model); 3: spheres in a slab between a front
-    /// wall z = 0 and a back wall z = slabDepth, with the box's walls around (docs/model.md,
-    /// "The slab mode"). Gravity stays in the x-y plane.
+    /// wall z = 0 and a back wall z = slabDepth, with the box's walls around, or in `walls`
+    /// (docs/model.md, "The slab mode"). Gravity stays in the x-y plane.
     int dimension = 2;
     /// Depth of the slab in the 3D mode, m, >= the largest diameter; not used in 2D.
     double slabDepth = 0.0;
+    /// The slab mode's walls, each a plane or a cylinder (docs/theory/slab-mode.md): empty
+    /// (the default) the slab's six, the box's four and the front and back; else these
+    /// alone. Whatever the walls, a particle that leaves the box or the slab stops the run.
+    /// Empty in 2D, whose walls are the box's.
+    std::vector<WallSettings> walls;
 };
 
 /// A particle of a bed laid before the rest are packed (BedRecipe::placed): at a given
@@ -190,42 +218,6 @@ std::string bedDifferences(const Settings& settings, const BedRecipe& inFile,
 /// where the CPU has it, else "baseline" (x86-64's SSE2); the environment variable DEM_SIMD =
 /// baseline or avx2 chooses. Both give the same bits. Throws dem::Error for a bad DEM_SIMD.
 std::string streamingLoopsInUse();
-
-/// The bed's own speed scale sqrt(|g| d_max), the speed of a fall through half the largest
-/// diameter, m/s: a bed under gravity collides at least this fast.
-double bedSpeedScale(const Settings& settings);
-
-/// The impact speed the HertzMindlin step bounds are taken at: impactSpeed, or
-/// bedSpeedScale where that is larger (settingsWarnings then says so), m/s.
-double hertzSpeed(const Settings& settings);
-
-/// Eq. 7 time-step bound (2 pi/5) sqrt(m_min/kn) over the classes, s; smallest class in `cls`.
-/// HertzMindlin: the least (2 pi/5) sqrt(m/S) over the pairs of classes and the walls, m the
-/// lighter particle's mass and S = 2 E* sqrt(R* delta_max) Hertz's stiffness at the peak
-/// overlap of an impact at hertzSpeed; `cls` the lighter class of that contact.
-double timeStepBound(const Settings& settings, int* smallestClass = nullptr);
-
-/// Contact duration t_c for a pair of the lightest class, with that pair's restitution, s:
-/// under the linear law the shortest contact (a wall's has twice the mass), until the
-/// clamped force vanishes. HertzMindlin: the shortest of Hertz's elastic contact times at
-/// hertzSpeed over the pairs of classes and the walls.
-double pairContactTime(const Settings& settings);
-
-/// The DEM step's measured bounds (docs/theory/numerics.md, "The DEM step's bound"), as fractions of
-/// pairContactTime: below the safe one a head-on pair keeps its restitution within 1 % and
-/// a settling bed comes to rest; above the stable one a settling bed does not.
-double safeTimeStep(const Settings& settings);
-double stableTimeStep(const Settings& settings);
-
-/// The dashpot's own stability bound: the largest step at which no contact's normal damping
-/// eta reverses the relative velocity within one step, min m_eff/eta over the pairs of
-/// classes and the walls (HertzMindlin: eta at the peak overlap of an impact at hertzSpeed),
-/// s. Settings with a larger dt are refused (validateSettings).
-double dashpotTimeStep(const Settings& settings);
-
-/// What is valid but near a bound, one sentence each, naming the entries (dt above half the
-/// dashpot's bound; HertzMindlin's impactSpeed below the bed's speed scale); empty if none.
-std::vector<std::string> settingsWarnings(const Settings& settings);
 
 class System;
 class SlabSystem;

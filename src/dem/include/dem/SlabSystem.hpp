@@ -2,11 +2,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The DEM engine of the slab mode (Settings::dimension = 3): spheres between a front wall
-// z = 0 and a back wall z = slabDepth and the box's walls around, with the contact kernel,
-// on EngineBase as the 2D engine (step, sub-steps, neighbour list), with the sphere's drift,
-// pair and wall forces and kick, the packing and the state file.
+// z = 0 and a back wall z = slabDepth and the box's walls around, or within the planes and
+// cylinders of Settings::walls, with the contact kernel, on EngineBase as the 2D engine
+// (step, sub-steps, neighbour list), with the sphere's drift, pair and wall forces and kick,
+// the packing and the state file.
 
 #include "dem/ContactKernel.hpp"
+#include "dem/CylinderWall.hpp"
 #include "dem/EngineBase.hpp"
 #include "dem/PlaneWall.hpp"
 
@@ -20,6 +22,12 @@ namespace dem {
 
 /// The walls of a slab: floor, right, ceiling, left (as boxWalls), front z = 0, back z = depth.
 std::vector<PlaneWall3> slabWalls(const Box& box, double depth);
+
+/// The plane walls of the settings: the slab's six if Settings::walls is empty, else its
+/// planes in their order (normals made unit).
+std::vector<PlaneWall3> planeWalls(const Settings& settings);
+/// The cylinder walls of Settings::walls in their order (axes made unit).
+std::vector<CylinderWall> cylinderWalls(const Settings& settings);
 
 /// Per-particle arrays of the slab, structure of arrays as Particles.
 struct SlabParticles {
@@ -100,8 +108,8 @@ class SlabSystem : public EngineBase<SlabSystem, SphereTraits> {
 public:
     explicit SlabSystem(const Settings& settings);
 
-    /// Adds a wall through `point` with normal `normal` (normalised here) pointing into the
-    /// domain; walls added later come after the slab's six.
+    /// Adds a plane wall through `point` with normal `normal` (normalised here) pointing into
+    /// the domain, after the planes of the settings (walls()).
     void addWall(const Eigen::Vector3d& point, const Eigen::Vector3d& normal);
     /// Throws if the sphere pokes through a wall or overlaps a particle by more than 1 % of d.
     void addParticle(int cls, const Eigen::Vector3d& pos, const Eigen::Vector3d& vel,
@@ -123,6 +131,24 @@ public:
     /// Force the particles exert on wall w at the current state (dashpots at the current
     /// velocity, histories as stored), N.
     Eigen::Vector3d wallForce(int w) const;
+
+    /// The cylinder walls (cylinderWalls of the settings).
+    const std::vector<CylinderWall>& cylinders() const { return cylinders_; }
+    /// The walls of the contact lists and of wallForce: the planes (walls()) as w = 0, 1,
+    /// ..., then the cylinders.
+    int wallCount() const { return static_cast<int>(walls_.size() + cylinders_.size()); }
+    /// Where p stands against wall w: the one geometry of every wall loop.
+    WallSide wallSide(int w, const Eigen::Vector3d& p) const
+    {
+        const int planes = static_cast<int>(walls_.size());
+        return w < planes ? planeSide(walls_[w], p) : cylinders_[w - planes].side(p);
+    }
+    /// wallSide(w, p).distance, alone (the list build's and the touching test's).
+    double wallDistance(int w, const Eigen::Vector3d& p) const
+    {
+        const int planes = static_cast<int>(walls_.size());
+        return w < planes ? walls_[w].distance(p) : cylinders_[w - planes].distance(p);
+    }
     /// The search's candidate pairs of the last build (for tests).
     const SlabPairList& pairList() const { return pairs_; }
 
@@ -159,6 +185,7 @@ private:
     /// With rolling resistance, after the pair forces: as System's (RollingLimit.hpp).
     template <class Law> void limitRollingTorques();
 
+    std::vector<CylinderWall> cylinders_;   // after the planes in the wall index (wallCount)
     std::vector<int> touchingScratch_;   // the touching pairs of each group, per step
     std::vector<WallPick> wallPicks_;    // the touching wall contacts, per step
     std::vector<int> touchingPerGroup_;  // how many of each group's pairs touch, per step

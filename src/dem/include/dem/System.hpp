@@ -92,6 +92,9 @@ private:
     /// and added; the walls' are scaled in the wall loop.
     template <class Law> void limitRollingTorques();
     [[noreturn]] void throwLostParticle() const;
+    /// The walls the neighbour list tests (EngineBase): the box's.
+    int wallCount() const { return static_cast<int>(walls_.size()); }
+    double wallDistance(int w, const Eigen::Vector2d& p) const { return walls_[w].distance(p); }
 
     static constexpr double skinStartFraction = 0.4;   // of d_min, the adaptive skin's start
 
