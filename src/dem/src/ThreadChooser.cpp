@@ -46,9 +46,15 @@ void ThreadChooser::record(double seconds)
             watched_[watchedCalls_++ % trialCalls] = seconds;
             if (watchedCalls_ >= trialCalls
                 && meanWithoutSlowest(watched_) > oneMean_) {
-                // Slower than one thread was at the trial: the load changed, or the step's
-                // cost did (a bed that settles or lifts); a new trial decides
+                // Slower than one thread was at the trial. Within two watches of the hold's
+                // start: the trial caught a quiet moment beside a busy core, which the next
+                // would catch as often; one thread holds. Later: the load changed, or the
+                // step's cost did (a bed that settles or lifts); a new trial decides
                 ++holdsCutShort_;
+                if (watchedCalls_ <= 2 * trialCalls) {
+                    hold(1);
+                    return;
+                }
                 hold_[1] = minHold;
                 trial_ = 0;
                 return;
