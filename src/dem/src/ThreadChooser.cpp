@@ -46,9 +46,17 @@ void ThreadChooser::record(double seconds)
             watched_[watchedCalls_++ % trialCalls] = seconds;
             if (watchedCalls_ >= trialCalls
                 && meanWithoutSlowest(watched_) > oneMean_) {
-                // Slower than one thread was at the trial: the load changed, or the step's
-                // cost did (a bed that settles or lifts); a new trial decides
+                // Slower than one thread was at the trial. At twice the trial's time on all
+                // threads within two watches of the hold's start: the trial caught a quiet
+                // moment beside a busy core (there a call waits a time slice every few), which
+                // the next would catch as often; one thread holds. Else the load changed, or
+                // the step's cost did (a bed that settles or lifts); a new trial decides
                 ++holdsCutShort_;
+                if (watchedCalls_ <= 2 * trialCalls
+                    && meanWithoutSlowest(watched_) > 2.0 * meanWithoutSlowest(times_[1])) {
+                    hold(1);
+                    return;
+                }
                 hold_[1] = minHold;
                 trial_ = 0;
                 return;

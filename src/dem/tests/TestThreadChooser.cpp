@@ -3,8 +3,8 @@
 // The team size chosen by timing (ThreadChooser): the faster of one thread and all wins, a
 // settled choice costs few trials, a change of the load is seen within a hold, one slow call
 // in a trial does not decide it but calls that often wait for a core do, a hold on all threads
-// slower than one thread ends within a trial's calls; and the engines under it keep the bits
-// of one thread.
+// slower than one thread ends within a trial's calls (one thread holding if it lost from its
+// start); and the engines under it keep the bits of one thread.
 
 #include "dem/SlabSystem.hpp"
 #include "dem/ThreadChooser.hpp"
@@ -136,6 +136,28 @@ TEST(ThreadChooser, TrialsThatCatchAQuietMomentDoNotKeepTwoThreadsSlower)
     EXPECT_LT(spent, 1.05 * 10000 * 1.2e-3);
 }
 
+TEST(ThreadChooser, TrialsThatAlwaysCatchAQuietMomentDoNotKeepTwoThreadsSlower)
+{
+    // As above, but every trial's calls on two threads catch a quiet moment: a new trial of
+    // both teams after each watched hold would be won by two threads again each time (1.16
+    // times one thread's time); a hold that loses from its start hands over to one thread's hold
+    ThreadChooser chooser(2);
+    std::int64_t streakOnAll = 0, waitedOnAll = 0;
+    double spent = 0.0;
+    for (int k = 0; k < 10000; ++k) {
+        const int team = chooser.next();
+        streakOnAll = team == 1 ? 0 : streakOnAll + 1;
+        const bool lucky = streakOnAll <= blockCalls;
+        const double cost = team == 1 ? 1.2e-3
+                            : lucky   ? 0.8e-3
+                                      : (++waitedOnAll % 3 == 0 ? 5.0e-3 : 0.9e-3);
+        spent += cost;
+        chooser.record(cost);
+    }
+    // Never slower than one thread (10^4 calls of 1.2 ms) by more than 5 %
+    EXPECT_LT(spent, 1.05 * 10000 * 1.2e-3);
+}
+
 TEST(ThreadChooser, AHoldOnAllThreadsEndsWithinATrialsCallsOfAChange)
 {
     // Two threads faster, until another run takes a core in the middle of a hold: one
@@ -177,6 +199,25 @@ TEST(ThreadChooser, AStepWhoseCostSwingsKeepsTheFasterTeam)
         chooser.record(cost);
     }
     // Within 5 % of two threads all along: the trials' calls on one thread, 23 each
+    EXPECT_LT(spent, 1.05 * best);
+    EXPECT_GT(chooser.holdsCutShort(), 0);
+}
+
+TEST(ThreadChooser, AStepWhoseCostJumpsKeepsTheFasterTeam)
+{
+    // A quiet machine, two threads 1.5 times faster than one, and a step whose cost jumps by
+    // 1.8 every 250 calls and back (a bed that lifts in slugs): a hold that loses at its start
+    // to one thread's earlier trial, at less than twice the trial's time on all threads, is
+    // timed again on both teams, and two threads keep it
+    ThreadChooser chooser(2);
+    double spent = 0.0, best = 0.0;
+    for (int k = 0; k < 20000; ++k) {
+        const double one = (k / 250) % 2 ? 1.8e-3 : 1.0e-3;
+        const double cost = chooser.next() == 1 ? one : one / 1.5;
+        spent += cost;
+        best += one / 1.5;
+        chooser.record(cost);
+    }
     EXPECT_LT(spent, 1.05 * best);
     EXPECT_GT(chooser.holdsCutShort(), 0);
 }

@@ -20,10 +20,12 @@ public:
     /// slowest call of each left out, runs for a hold of calls, then the next trial; the
     /// block on all threads stops as soon as its calls have taken longer than one thread's
     /// block. A hold on all threads is watched: once its last trialCalls calls, the slowest
-    /// left out, have taken longer than as many of one thread's in the trial, the hold ends
-    /// and a new trial starts (a trial that caught a quiet moment, or a neighbour that
-    /// started since, keeps two threads slower than one for about trialCalls calls, not a
-    /// hold; a step whose cost changed since the trial is timed again on both teams). Each team's hold
+    /// left out, have taken longer than as many of one thread's in the trial, the hold ends:
+    /// within its first 2 trialCalls calls and at twice the trial's time on all threads, one
+    /// thread holds (the trial caught a quiet moment beside a busy core, and a new one would
+    /// catch another as often), else a new trial starts (a neighbour that started since, or a
+    /// step whose cost changed, is timed again on both teams). Two threads slower than one are kept for about trialCalls calls, not
+    /// a hold. Each team's hold
     /// starts at minHold and doubles up to maxHold each time the team wins a trial, so that a
     /// settled choice costs few trials and a change of the load is seen again; one thread's
     /// win, or a hold on all threads ended by its watch, starts all threads' hold over, and
