@@ -4,7 +4,8 @@
 # Checks of the gas grid of any 3D mesh (gasGrid unstructured) on three
 # meshes blockMesh makes as regions of one case: box (a uniform 6 x 6 x 6
 # grid, against cartesianGrid's exact answers), cylinder (an O-grid 100 mm
-# across) and thin (one cell thick, refused). Each check states its source
+# across), thin (one cell thick, refused) and warped (the box with its inner
+# points moved at random: warped faces). Each check states its source
 # and tolerance (Test-unstructuredGrid.C).
 #   unstructuredGrid.sh <workDir>
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
@@ -12,7 +13,7 @@ app=Test-unstructuredGrid
 
 cp -r "$testsDir/dpmCoupling/unstructuredGridCase" "$workDir/case" || fail "copy"
 cd "$workDir/case" || fail "cd"
-for region in box cylinder thin
+for region in box cylinder thin warped
 do
     blockMesh -region $region >log.blockMesh.$region 2>&1 || fail "blockMesh $region"
 done

@@ -16,12 +16,13 @@ Description
     meshes of blockMesh (the case's regions): box, a uniform 6 x 6 x 6
     grid of 10 mm cells, where cartesianGrid's exact answers are known;
     cylinder, an O-grid 100 mm across (1320 hexes, curved and skewed);
-    thin, a bed one cell thick.
+    thin, a bed one cell thick; warped, the box with its inner points
+    moved at random by up to 2 mm each way (warped faces).
     - selection (gasGrid unstructured), sizes, the refusals: a mesh one
       cell thick, the disc and column shares, voidageModel discs2D;
     - findCell: polyMesh::findCell's cell at random points, also by the
-      walk from a far cell, -1 outside;
-    - interpolation: a linear field exactly (round-off) on both meshes;
+      walk from a far cell, -1 outside (box, cylinder, warped);
+    - interpolation: a linear field exactly (round-off) on those three;
       on the box trilinear's stencil at the centres and mesh points, and
       within 3h^2/2 of trilinear for |x|^2 (derived in checkTrilinear);
     - the shares (Test-unstructuredGridShares.C).
@@ -163,18 +164,24 @@ void checkLinear(const fvMesh& mesh, const unstructuredGrid& grid)
     }
     cellWeights w;
     grid.interpolationStencils(n, x.cdata(), y.cdata(), z.cdata(), 1, w);
-    scalar worst = 0, worstSum = 0, most = 0;
+    scalar worst = 0, worstSum = 0, most = 0, largest = 0;
     for (label i = 0; i < n; ++i)
     {
         const point p(x[i], y[i], z[i]);
         worst = max(worst, mag(w.interpolate(i, f) - (1 + (slope & p))));
-        scalar sum = 0;
-        for (label k = w.stride*i; k < w.stride*i + w.counts[i]; ++k) sum += w.weights[k];
+        scalar sum = 0, sumMag = 0;
+        for (label k = w.stride*i; k < w.stride*i + w.counts[i]; ++k)
+        {
+            sum += w.weights[k];
+            sumMag += mag(w.weights[k]);
+        }
         worstSum = max(worstSum, mag(sum - 1));
+        largest = max(largest, sumMag);
         most = max(most, scalar(w.counts[i]));
     }
     const std::string m = " (" + mesh.name() + ", worst of 2e4)";
-    Info<< "    stencils of up to " << most << " cells" << m.c_str() << endl;
+    Info<< "    stencils of up to " << most << " cells, sum |w| up to "
+        << largest << m.c_str() << endl;
     check("a linear field exactly" + m, 1 + worst, 1, 1e-12);
     check("stencil weights add up to 1" + m, 1 + worstSum, 1, 1e-12);
 
@@ -274,9 +281,26 @@ int main(int argc, char *argv[])
     autoPtr<fvMesh> box(load("box"));
     autoPtr<fvMesh> cylinder(load("cylinder"));
     autoPtr<fvMesh> thin(load("thin"));
+    autoPtr<fvMesh> warped(load("warped"));
+
+    // The box's inner points moved at random by up to 0.2 h each way: its
+    // faces are warped, so a cell's face planes and its tets differ
+    {
+        Random rnd(41);
+        const boundBox bb = warped->bounds();
+        pointField moved(warped->points());
+        for (point& p : moved)
+        {
+            if (min(cmptMin(p - bb.min()), cmptMin(bb.max() - p)) > 1e-9)
+            {
+                p += 0.01*0.2*(2*rnd.sample01<vector>() - vector::one);
+            }
+        }
+        warped->movePoints(moved);
+    }
 
     checkSelectionAndRefusals(box(), thin());
-    for (const fvMesh* mesh : {box.get(), cylinder.get()})
+    for (const fvMesh* mesh : {box.get(), cylinder.get(), warped.get()})
     {
         const unstructuredGrid grid(*mesh);
         grid.report(Info);
