@@ -20,30 +20,19 @@ Description
     limits and against values worked by hand from the published formulas;
     the Sauter mean diameter of mapped mixtures; the voidage models (their
     selection, the mapped volumes against the particles' volume, lattices
-    of known solid fraction). Run in a case with the paper's 20 x 120 mesh
-    (2.5 mm thick).
-    Ends with the line "N passed, M failed".
+    of known solid fraction). GoogleTest cases, run in a case with the
+    paper's 20 x 120 mesh (2.5 mm thick):
+
+        Test-dpmCoupling -case <dir> [--gtest_filter=Suite.Name]
 
 \*---------------------------------------------------------------------------*/
 
-#include "fvCFD.H"
-#include "checks.H"
-
-using namespace Foam;
+#include "couplingTestMain.H"
 
 int main(int argc, char *argv[])
 {
-    argList::noParallel();
-    #include "setRootCase.H"
-    #include "createTime.H"
-    #include "createMesh.H"
-
-    checkGeometry(mesh);
-    checkUmfAndDrag();
-    checkUnknownEntries();
-    checkMixtureClosures();
-    checkVoidage(mesh);
-
-    reportChecks();
-    return 0;
+    return couplingTest::main(argc, argv, couplingTest::readCase);
 }
+
+
+// ************************************************************************* //

@@ -30,23 +30,32 @@ Description
       diffusion (exact on an unbounded grid: d<y^2>/dt = 2 for the
       three-point Laplacian; with b one cell the kernel's tail is below
       1e-15 at the column's ends); a uniform field stays uniform.
-    Ends with the line "N passed, M failed".
+    GoogleTest cases (suites GasInDepthGrid, TrilinearInterpolation,
+    SphereBoxShares, Spheres3D and DiffusionSmoothing), run in a case with
+    that mesh:
+
+        Test-gasInDepth -case <dir> [--gtest_filter=Suite.Name]
 
 \*---------------------------------------------------------------------------*/
 
-#include "fvCFD.H"
+#include "couplingTestMain.H"
 #include "cartesianGrid.H"
 #include "forEachSphereBoxOverlap.H"
 #include "voidageModel.H"
 #include "coarseGraining.H"
 #include "Random.H"
 #include "IStringStream.H"
-#include "unitChecks.H"
 
 using namespace Foam;
 
-void checkGrid(const fvMesh& mesh, const cartesianGrid& grid)
+static const scalar pi = constant::mathematical::pi;
+
+
+// The grid: sizes, and every cell found at its centre
+TEST(GasInDepthGrid, SizesAndEveryCellFoundAtItsCentre)
 {
+    const fvMesh& mesh = couplingTest::mesh();
+    const cartesianGrid grid(mesh);
     check("cells in x", grid.nx(), 4, 0);
     check("cells in y", grid.ny(), 24, 0);
     check("cells in z", grid.nz(), 4, 0);
@@ -70,9 +79,11 @@ void checkGrid(const fvMesh& mesh, const cartesianGrid& grid)
 }
 
 
-void checkInterpolation(const fvMesh& mesh, const cartesianGrid& grid)
+// A linear field is interpolated exactly between the outer centres
+TEST(TrilinearInterpolation, LinearFieldExactly)
 {
-    // A linear field is interpolated exactly between the outer centres
+    const fvMesh& mesh = couplingTest::mesh();
+    const cartesianGrid grid(mesh);
     const vector slope(3, -2, 5);
     scalarField eps(mesh.nCells());
     forAll(eps, c)
@@ -97,7 +108,14 @@ void checkInterpolation(const fvMesh& mesh, const cartesianGrid& grid)
         worst = max(worst, mag(u - vector(1, 2, 3)));
     }
     check("trilinear: a linear field exactly (worst of 1e4)", 1 + worst, 1, 1e-13);
+}
 
+
+// The stencil at a cell's centre: that cell alone
+TEST(TrilinearInterpolation, StencilAtACentreIsThatCell)
+{
+    const fvMesh& mesh = couplingTest::mesh();
+    const cartesianGrid grid(mesh);
     label cells[8];
     scalar w[8];
     const label c = grid.cellIJK(2, 7, 1);
@@ -115,11 +133,13 @@ void checkInterpolation(const fvMesh& mesh, const cartesianGrid& grid)
 }
 
 
-void checkSphereShares(const fvMesh& mesh, const cartesianGrid& grid)
+// A sphere's volume shared out by forEachSphereBoxOverlap: spheres of the
+// glass (3.1 mm), the large intruder (9.43 mm) and spread spheres of two
+// and three cells, anywhere inside the column
+TEST(SphereBoxShares, EachCellsShareIsItsSphereBoxVolume)
 {
-    // Spheres of the glass (3.1 mm), the large intruder (9.43 mm) and
-    // spread spheres of two and three cells, anywhere inside the column
-    const scalar pi = constant::mathematical::pi;
+    const fvMesh& mesh = couplingTest::mesh();
+    const cartesianGrid grid(mesh);
     Random rnd(17);
     const scalar radii[] = {1.55e-3, 4.715e-3, grid.dx(), 1.5*grid.dx()};
     for (const scalar R : radii)
@@ -168,132 +188,171 @@ void checkSphereShares(const fvMesh& mesh, const cartesianGrid& grid)
 }
 
 
-void checkSpheres3D(const fvMesh& mesh, const cartesianGrid& grid)
+// voidageModel spheres3D: an exact model and one spreading its particles
+// over a sphere of diameter Ds = 2 cells (19.05 mm)
+namespace
 {
-    const scalar pi = constant::mathematical::pi;
-    const label nCells = grid.nx()*grid.ny()*grid.nz();
-    const scalarField& Vc = grid.cellVolumes();
     const scalar voidageMin = 0.05;
-    auto select = [&](const char* entries)
+
+    autoPtr<voidageModel> select(const char* entries, const cartesianGrid& grid)
     {
         return voidageModel::New(dictionary(IStringStream(entries)()), grid, voidageMin);
-    };
-    autoPtr<voidageModel> exact(select("voidageModel spheres3D;"));
-    const scalar Ds = 2*grid.dx();
-    autoPtr<voidageModel> spread
-    (
-        select("voidageModel spheres3D; spheres3DCoeffs { spreadingDiameter 0.01905; }")
-    );
-    check("spheres3D selected", exact->type() == "spheres3D", 1, 0);
-
-    // 4000 glass beads and 4 intruders at random (overlaps allowed): the
-    // volume mapped is the particles', on 1 and 2 threads alike
-    {
-        Random rnd(23);
-        const label n = 4004;
-        List<double> x(n), y(n), z(n), d(n);
-        scalar Vp = 0;
-        for (label i = 0; i < n; ++i)
-        {
-            d[i] = i < 4 ? 9.43e-3 : 3.101e-3;
-            const scalar r = 0.5*d[i];
-            x[i] = grid.xMin() + r + rnd.sample01<scalar>()*(grid.xMax() - grid.xMin() - 2*r);
-            y[i] = grid.yMin() + r + rnd.sample01<scalar>()*(0.08 - 2*r);
-            z[i] = grid.zMin() + r + rnd.sample01<scalar>()*(grid.zMax() - grid.zMin() - 2*r);
-            Vp += pi*pow3(d[i])/6;
-        }
-        for (voidageModel* model : {exact.get(), spread.get()})
-        {
-            scalarField eps1(nCells), phiP1(nCells), eps2(nCells), phiP2(nCells);
-            model->updateOverlaps(n, x.cdata(), y.cdata(), z.cdata(), d.cdata(), 1);
-            model->updateFields(n, d.cdata(), eps1, phiP1);
-            model->updateOverlaps(n, x.cdata(), y.cdata(), z.cdata(), d.cdata(), 2);
-            model->updateFields(n, d.cdata(), eps2, phiP2);
-            const std::string m = model == exact.get() ? " (exact)" : " (spread)";
-            check("mapped volume = particles' volume" + m, sum(phiP1*Vc), Vp, 1e-12);
-            check("voidage = max(1 - phiP, voidageMin)" + m, max(mag(eps1 - max(1 - phiP1, voidageMin))), 0, 0);
-            check("2 threads: the same fields bit for bit" + m, max(mag(phiP1 - phiP2)), 0, 0);
-            label most = 0;
-            forAll(model->counts(), i) most = max(most, model->counts()[i]);
-            check("cells per particle within the stride" + m, most <= model->stride(), 1, 0);
-        }
-        check("spheres3D: 8 cells at most for particles up to a cell", exact->stride(), 8, 0);
     }
 
-    // A simple cubic lattice of touching spheres, spacing a third of a
-    // cell, its centres on the grid lines: every cell away from the walls
-    // holds a solid fraction pi/6
+    autoPtr<voidageModel> exactModel(const cartesianGrid& grid)
     {
-        const scalar s = grid.dx()/3;
-        DynamicList<double> x, y, z, d;
-        for (label i = 1; i < 3*grid.nx(); ++i)
-        for (label j = 1; j < 18; ++j)
-        for (label k = 1; k < 3*grid.nz(); ++k)
-        {
-            x.append(grid.xMin() + i*s);
-            y.append(grid.yMin() + j*s);
-            z.append(grid.zMin() + k*s);
-            d.append(s);
-        }
-        scalarField eps(nCells), phiP(nCells);
-        exact->updateOverlaps(x.size(), x.cdata(), y.cdata(), z.cdata(), d.cdata(), 1);
-        exact->updateFields(x.size(), d.cdata(), eps, phiP);
-        scalar worst = 0;
-        for (label i = 1; i < grid.nx() - 1; ++i)
-        for (label j = 1; j < 5; ++j)
-        for (label k = 1; k < grid.nz() - 1; ++k)
-        {
-            worst = max(worst, mag(eps[grid.cellIJK(i, j, k)] - (1 - pi/6)));
-        }
-        check("cubic lattice: eps = 1 - pi/6 in the inner cells", 1 + worst, 1, 1e-12);
-        check("cubic lattice: empty cell above", eps[grid.cellIJK(1, 8, 1)], 1, 0);
+        return select("voidageModel spheres3D;", grid);
     }
 
-    // One intruder spread over a sphere of diameter Ds: each cell holds the
-    // share of the spreading sphere's volume inside it
+    autoPtr<voidageModel> spreadModel(const cartesianGrid& grid)
     {
-        const double x = grid.xMin() + 1.3*grid.dx();
-        const double y = grid.yMin() + 5.6*grid.dy();
-        const double z = grid.zMin() + 2.1*grid.dz();
-        const double d = 9.43e-3;
-        scalarField eps(nCells), phiP(nCells);
-        spread->updateOverlaps(1, &x, &y, &z, &d, 1);
-        spread->updateFields(1, &d, eps, phiP);
-        const scalar Rs = 0.5*Ds;
-        const label c = grid.cellIJK(1, 5, 2);
-        const scalar h = 0.5*grid.dx();
-        const point& C = mesh.C()[c];
-        const scalar share = sphereBoxOverlap
-        (
-            x, y, z, Rs, C.x() - h, C.x() + h, C.y() - h, C.y() + h,
-            C.z() - h, C.z() + h
-        )/(4*pi*pow3(Rs)/3);
-        check("spread: the own cell's share of the spreading sphere", phiP[c], pi*pow3(d)/6/Vc[c]*share, 1e-12);
-        check("spread: the own cell holds less than the whole", share < 0.5, 1, 0);
-        check("spread: the volume kept", sum(phiP*Vc), pi*pow3(d)/6, 1e-12);
-    }
-
-    // Beside a wall the spreading sphere's part beyond it stays with the
-    // cells at the wall: the volume is kept
-    {
-        const double x = grid.xMin() + 0.5*9.43e-3;
-        const double y = grid.yMin() + 0.5*9.43e-3;
-        const double z = grid.zMax() - 0.5*9.43e-3;
-        const double d = 9.43e-3;
-        scalarField eps(nCells), phiP(nCells);
-        spread->updateOverlaps(1, &x, &y, &z, &d, 1);
-        spread->updateFields(1, &d, eps, phiP);
-        check("spread at a corner: the volume kept", sum(phiP*Vc), pi*pow3(d)/6, 1e-12);
+        return select("voidageModel spheres3D; spheres3DCoeffs { spreadingDiameter 0.01905; }", grid);
     }
 }
 
 
-void checkDiffusion(const fvMesh& mesh, const cartesianGrid& grid)
+TEST(Spheres3D, Selected)
+{
+    const cartesianGrid grid(couplingTest::mesh());
+    autoPtr<voidageModel> exact(exactModel(grid));
+    check("spheres3D selected", exact->type() == "spheres3D", 1, 0);
+}
+
+
+// 4000 glass beads and 4 intruders at random (overlaps allowed): the
+// volume mapped is the particles', on 1 and 2 threads alike
+TEST(Spheres3D, MappedVolumeIsTheParticlesOnOneAndTwoThreads)
+{
+    const cartesianGrid grid(couplingTest::mesh());
+    const label nCells = grid.nx()*grid.ny()*grid.nz();
+    const scalarField& Vc = grid.cellVolumes();
+    autoPtr<voidageModel> exact(exactModel(grid));
+    autoPtr<voidageModel> spread(spreadModel(grid));
+    Random rnd(23);
+    const label n = 4004;
+    List<double> x(n), y(n), z(n), d(n);
+    scalar Vp = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        d[i] = i < 4 ? 9.43e-3 : 3.101e-3;
+        const scalar r = 0.5*d[i];
+        x[i] = grid.xMin() + r + rnd.sample01<scalar>()*(grid.xMax() - grid.xMin() - 2*r);
+        y[i] = grid.yMin() + r + rnd.sample01<scalar>()*(0.08 - 2*r);
+        z[i] = grid.zMin() + r + rnd.sample01<scalar>()*(grid.zMax() - grid.zMin() - 2*r);
+        Vp += pi*pow3(d[i])/6;
+    }
+    for (voidageModel* model : {exact.get(), spread.get()})
+    {
+        scalarField eps1(nCells), phiP1(nCells), eps2(nCells), phiP2(nCells);
+        model->updateOverlaps(n, x.cdata(), y.cdata(), z.cdata(), d.cdata(), 1);
+        model->updateFields(n, d.cdata(), eps1, phiP1);
+        model->updateOverlaps(n, x.cdata(), y.cdata(), z.cdata(), d.cdata(), 2);
+        model->updateFields(n, d.cdata(), eps2, phiP2);
+        const std::string m = model == exact.get() ? " (exact)" : " (spread)";
+        check("mapped volume = particles' volume" + m, sum(phiP1*Vc), Vp, 1e-12);
+        check("voidage = max(1 - phiP, voidageMin)" + m, max(mag(eps1 - max(1 - phiP1, voidageMin))), 0, 0);
+        check("2 threads: the same fields bit for bit" + m, max(mag(phiP1 - phiP2)), 0, 0);
+        label most = 0;
+        forAll(model->counts(), i) most = max(most, model->counts()[i]);
+        check("cells per particle within the stride" + m, most <= model->stride(), 1, 0);
+    }
+    check("spheres3D: 8 cells at most for particles up to a cell", exact->stride(), 8, 0);
+}
+
+
+// A simple cubic lattice of touching spheres, spacing a third of a
+// cell, its centres on the grid lines: every cell away from the walls
+// holds a solid fraction pi/6
+TEST(Spheres3D, CubicLatticeOfSolidFractionPiOverSix)
+{
+    const cartesianGrid grid(couplingTest::mesh());
+    const label nCells = grid.nx()*grid.ny()*grid.nz();
+    autoPtr<voidageModel> exact(exactModel(grid));
+    const scalar s = grid.dx()/3;
+    DynamicList<double> x, y, z, d;
+    for (label i = 1; i < 3*grid.nx(); ++i)
+    for (label j = 1; j < 18; ++j)
+    for (label k = 1; k < 3*grid.nz(); ++k)
+    {
+        x.append(grid.xMin() + i*s);
+        y.append(grid.yMin() + j*s);
+        z.append(grid.zMin() + k*s);
+        d.append(s);
+    }
+    scalarField eps(nCells), phiP(nCells);
+    exact->updateOverlaps(x.size(), x.cdata(), y.cdata(), z.cdata(), d.cdata(), 1);
+    exact->updateFields(x.size(), d.cdata(), eps, phiP);
+    scalar worst = 0;
+    for (label i = 1; i < grid.nx() - 1; ++i)
+    for (label j = 1; j < 5; ++j)
+    for (label k = 1; k < grid.nz() - 1; ++k)
+    {
+        worst = max(worst, mag(eps[grid.cellIJK(i, j, k)] - (1 - pi/6)));
+    }
+    check("cubic lattice: eps = 1 - pi/6 in the inner cells", 1 + worst, 1, 1e-12);
+    check("cubic lattice: empty cell above", eps[grid.cellIJK(1, 8, 1)], 1, 0);
+}
+
+
+// One intruder spread over a sphere of diameter Ds: each cell holds the
+// share of the spreading sphere's volume inside it
+TEST(Spheres3D, SpreadIntruderOwnCellShare)
+{
+    const fvMesh& mesh = couplingTest::mesh();
+    const cartesianGrid grid(mesh);
+    const label nCells = grid.nx()*grid.ny()*grid.nz();
+    const scalarField& Vc = grid.cellVolumes();
+    const scalar Ds = 2*grid.dx();
+    autoPtr<voidageModel> spread(spreadModel(grid));
+    const double x = grid.xMin() + 1.3*grid.dx();
+    const double y = grid.yMin() + 5.6*grid.dy();
+    const double z = grid.zMin() + 2.1*grid.dz();
+    const double d = 9.43e-3;
+    scalarField eps(nCells), phiP(nCells);
+    spread->updateOverlaps(1, &x, &y, &z, &d, 1);
+    spread->updateFields(1, &d, eps, phiP);
+    const scalar Rs = 0.5*Ds;
+    const label c = grid.cellIJK(1, 5, 2);
+    const scalar h = 0.5*grid.dx();
+    const point& C = mesh.C()[c];
+    const scalar share = sphereBoxOverlap
+    (
+        x, y, z, Rs, C.x() - h, C.x() + h, C.y() - h, C.y() + h,
+        C.z() - h, C.z() + h
+    )/(4*pi*pow3(Rs)/3);
+    check("spread: the own cell's share of the spreading sphere", phiP[c], pi*pow3(d)/6/Vc[c]*share, 1e-12);
+    check("spread: the own cell holds less than the whole", share < 0.5, 1, 0);
+    check("spread: the volume kept", sum(phiP*Vc), pi*pow3(d)/6, 1e-12);
+}
+
+
+// Beside a wall the spreading sphere's part beyond it stays with the
+// cells at the wall: the volume is kept
+TEST(Spheres3D, SpreadIntruderAtACornerKeepsItsVolume)
+{
+    const cartesianGrid grid(couplingTest::mesh());
+    const label nCells = grid.nx()*grid.ny()*grid.nz();
+    const scalarField& Vc = grid.cellVolumes();
+    autoPtr<voidageModel> spread(spreadModel(grid));
+    const double x = grid.xMin() + 0.5*9.43e-3;
+    const double y = grid.yMin() + 0.5*9.43e-3;
+    const double z = grid.zMax() - 0.5*9.43e-3;
+    const double d = 9.43e-3;
+    scalarField eps(nCells), phiP(nCells);
+    spread->updateOverlaps(1, &x, &y, &z, &d, 1);
+    spread->updateFields(1, &d, eps, phiP);
+    check("spread at a corner: the volume kept", sum(phiP*Vc), pi*pow3(d)/6, 1e-12);
+}
+
+
+// coarseGraining diffusion of bandwidth b = 0.009525 m (one cell)
+namespace
 {
     const scalar b = 0.009525;
-    autoPtr<coarseGraining> smoothing
-    (
-        coarseGraining::New
+
+    autoPtr<coarseGraining> diffusion(const cartesianGrid& grid)
+    {
+        return coarseGraining::New
         (
             dictionary
             (
@@ -303,16 +362,32 @@ void checkDiffusion(const fvMesh& mesh, const cartesianGrid& grid)
                 )()
             ),
             grid
-        )
-    );
+        );
+    }
+
+    //- A unit amount in a cell of the column's middle, 12 cells from the
+    //  ends, diffused
+    scalarField diffusedUnit(const coarseGraining& smoothing, const cartesianGrid& grid, const label c)
+    {
+        scalarField f(couplingTest::mesh().nCells(), 0);
+        f[c] = 1;
+        smoothing.smooth(f);
+        return f;
+    }
+}
+
+
+// A unit amount in a cell of the column's middle, 12 cells from the
+// ends: along y it spreads as on an unbounded grid
+TEST(DiffusionSmoothing, UnitAmountKeepsSumSignAndVariance)
+{
+    const fvMesh& mesh = couplingTest::mesh();
+    const cartesianGrid grid(mesh);
+    autoPtr<coarseGraining> smoothing(diffusion(grid));
     check("diffusion selected", smoothing->type() == "diffusion", 1, 0);
 
-    // A unit amount in a cell of the column's middle, 12 cells from the
-    // ends: along y it spreads as on an unbounded grid
     const label c = grid.cellIJK(1, 12, 2);
-    scalarField f(mesh.nCells(), 0);
-    f[c] = 1;
-    smoothing->smooth(f);
+    const scalarField f(diffusedUnit(*smoothing, grid, c));
     scalar variance = 0;
     forAll(f, i)
     {
@@ -322,11 +397,30 @@ void checkDiffusion(const fvMesh& mesh, const cartesianGrid& grid)
     check("diffusion: no negative value", min(f) >= 0, 1, 0);
     check("diffusion: the variance along y = b^2/2", variance/(0.5*b*b), 1, 1e-12);
     check("diffusion: the cell keeps less than a third", f[c] < 1.0/3, 1, 0);
+}
 
+
+// A uniform field stays uniform
+TEST(DiffusionSmoothing, UniformFieldStaysUniform)
+{
+    const fvMesh& mesh = couplingTest::mesh();
+    const cartesianGrid grid(mesh);
+    autoPtr<coarseGraining> smoothing(diffusion(grid));
     scalarField uniform(mesh.nCells(), 0.4);
     smoothing->smooth(uniform);
     check("diffusion: a uniform field stays", 1 + max(mag(uniform - 0.4)), 1, 1e-15);
+}
 
+
+// A vector field is diffused by components: its z component is 3 times
+// the diffused unit amount
+TEST(DiffusionSmoothing, VectorFieldByComponents)
+{
+    const fvMesh& mesh = couplingTest::mesh();
+    const cartesianGrid grid(mesh);
+    autoPtr<coarseGraining> smoothing(diffusion(grid));
+    const label c = grid.cellIJK(1, 12, 2);
+    const scalarField f(diffusedUnit(*smoothing, grid, c));
     vectorField v(mesh.nCells(), Zero);
     v[c] = vector(1, -2, 3);
     smoothing->smooth(v);
@@ -336,18 +430,5 @@ void checkDiffusion(const fvMesh& mesh, const cartesianGrid& grid)
 
 int main(int argc, char *argv[])
 {
-    argList::noParallel();
-    #include "setRootCase.H"
-    #include "createTime.H"
-    #include "createMesh.H"
-
-    const cartesianGrid grid(mesh);
-    checkGrid(mesh, grid);
-    checkInterpolation(mesh, grid);
-    checkSphereShares(mesh, grid);
-    checkSpheres3D(mesh, grid);
-    checkDiffusion(mesh, grid);
-
-    reportChecks();
-    return 0;
+    return couplingTest::main(argc, argv, couplingTest::readCase);
 }

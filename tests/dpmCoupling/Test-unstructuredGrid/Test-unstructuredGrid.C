@@ -24,9 +24,14 @@ Description
       walk from a far cell, -1 outside (box, cylinder, warped);
     - interpolation: a linear field exactly (round-off) on those three;
       on the box trilinear's stencil at the centres and mesh points, and
-      within 3h^2/2 of trilinear for |x|^2 (derived in checkTrilinear);
+      within 3h^2/2 of trilinear for |x|^2 (derived in its test);
     - the shares (Test-unstructuredGridShares.C).
-    Ends with the line "N passed, M failed".
+    GoogleTest cases (suites UnstructuredGridSelection, UnstructuredFindCell,
+    UnstructuredInterpolation and UnstructuredShares), run in the case
+    tests/dpmCoupling/unstructuredGridCase with its four meshes made
+    (blockMesh -region box, cylinder, thin, warped):
+
+        Test-unstructuredGrid -case <dir> [--gtest_filter=Suite.Name]
 
 \*---------------------------------------------------------------------------*/
 
@@ -34,7 +39,6 @@ Description
 #include "unstructuredGridTests.H"
 #include "voidageModel.H"
 #include "IStringStream.H"
-#include "unitChecks.H"
 
 using namespace Foam;
 
@@ -42,14 +46,20 @@ using namespace Foam;
 template<class F>
 std::string errorOf(const F& f)
 {
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
     try
     {
         f();
     }
     catch (const Foam::error& e)
     {
+        FatalError.dontThrowExceptions();
+        FatalIOError.dontThrowExceptions();
         return e.message();
     }
+    FatalError.dontThrowExceptions();
+    FatalIOError.dontThrowExceptions();
     return "";
 }
 
@@ -59,8 +69,12 @@ bool says(const std::string& message, const char* words)
 }
 
 
-void checkSelectionAndRefusals(const fvMesh& box, const fvMesh& thin)
+// Selected by gasGrid unstructured; depth, volumes and the smallest cell
+// size of the 6 x 6 x 6 box of 10 mm cells (exact up to round-off); a
+// wrong name lists unstructured
+TEST(UnstructuredGridSelection, SelectedWithTheBoxsSizes)
 {
+    const fvMesh& box = boxMesh();
     autoPtr<gasGrid> grid
     (
         gasGrid::New(dictionary(IStringStream("gasGrid unstructured;")()), box)
@@ -79,12 +93,28 @@ void checkSelectionAndRefusals(const fvMesh& box, const fvMesh& thin)
         [&]{ gasGrid::New(dictionary(IStringStream("gasGrid unstructed;")()), box); }
     );
     check("a wrong name lists unstructured", says(wrong, "unstructured"), 1, 0);
+}
 
+
+// A mesh one cell thick is refused, naming gasGrid cartesian
+TEST(UnstructuredGridSelection, RefusesAMeshOneCellThick)
+{
+    const fvMesh& thin = thinMesh();
     const std::string thinMessage = errorOf([&]{ unstructuredGrid g(thin); });
     Info<< "    (" << thinMessage.c_str() << ")" << endl;
     check("a mesh one cell thick refused", says(thinMessage, "one cell thick"), 1, 0);
     check("... naming gasGrid cartesian", says(thinMessage, "gasGrid cartesian"), 1, 0);
+}
 
+
+// The disc and column shares, and voidageModel slab3D, are refused on it,
+// naming the model
+TEST(UnstructuredGridSelection, RefusesDiscAndColumnShares)
+{
+    autoPtr<gasGrid> grid
+    (
+        gasGrid::New(dictionary(IStringStream("gasGrid unstructured;")()), boxMesh())
+    );
     const double x = 0.03, y = 0.03, d = 0.005;
     cellWeights w;
     const std::string discs = errorOf
@@ -112,8 +142,10 @@ void checkSelectionAndRefusals(const fvMesh& box, const fvMesh& thin)
 }
 
 
-void checkFindCell(const fvMesh& mesh, const unstructuredGrid& grid)
+void checkFindCell(const fvMesh& mesh)
 {
+    const unstructuredGrid grid(mesh);
+    grid.report(Info);
     // Points in the bounding box grown by a tenth each way: the octree's
     // cell (-1 outside) from the search and from walks out of far cells
     Random rnd(31);
@@ -146,8 +178,9 @@ void checkFindCell(const fvMesh& mesh, const unstructuredGrid& grid)
 }
 
 
-void checkLinear(const fvMesh& mesh, const unstructuredGrid& grid)
+void checkLinear(const fvMesh& mesh)
 {
+    const unstructuredGrid grid(mesh);
     // A linear field at the cell centres comes out exactly anywhere in the
     // mesh, the boundary cells too
     const vector slope(3, -2, 5);
@@ -200,10 +233,12 @@ void checkLinear(const fvMesh& mesh, const unstructuredGrid& grid)
 }
 
 
-void checkTrilinear(const fvMesh& box, const unstructuredGrid& grid)
+// At a cell centre the cell alone, at an inner mesh point the mean of its
+// eight cells: trilinear's stencils there (1e-12, round-off)
+TEST(UnstructuredInterpolation, TrilinearsStencilAtCentresAndInnerPointsOfTheBox)
 {
-    // At a cell centre the cell alone, at an inner mesh point the mean of
-    // its eight cells: trilinear's stencils there
+    const fvMesh& box = boxMesh();
+    const unstructuredGrid grid(box);
     const cartesianGrid cartesian(box);
     Random rnd(3);
     scalarField f(box.nCells());
@@ -227,6 +262,23 @@ void checkTrilinear(const fvMesh& box, const unstructuredGrid& grid)
     forAll(at, i) worst = max(worst, mag(u.interpolate(i, f) - t.interpolate(i, f)));
     check("box: trilinear's value at the centres and inner points, random field ("
         + std::to_string(at.size()) + " places)", 1 + worst, 1, 1e-12);
+}
+
+
+// f = |x - x0|^2 between the outer centres of the box: within 3h^2/2 of
+// trilinear (derived below), and not below the convex field
+TEST(UnstructuredInterpolation, SquareDistanceWithinThreeHalvesHSquaredOfTrilinearOnTheBox)
+{
+    const fvMesh& box = boxMesh();
+    const unstructuredGrid grid(box);
+    const cartesianGrid cartesian(box);
+    // The random points of the trilinear stencils' test, drawn after its
+    // random field
+    Random rnd(3);
+    scalarField f(box.nCells());
+    forAll(f, c) f[c] = rnd.sample01<scalar>();
+    List<double> x, y, z;
+    cellWeights u, t;
 
     // f = |x - x0|^2 between the outer centres. Trilinear's error is
     // sum fx(1 - fx) h^2, in [0, 3h^2/4]; the cell-point one, a tet of the
@@ -262,14 +314,51 @@ void checkTrilinear(const fvMesh& box, const unstructuredGrid& grid)
 }
 
 
+// polyMesh::findCell's cell (-1 outside) at 5000 points in and around
+// each mesh, from the octree and from walks out of far cells: exact
+TEST(UnstructuredFindCell, PolyMeshFindCellsCellOnTheBox)
+{
+    checkFindCell(boxMesh());
+}
+
+TEST(UnstructuredFindCell, PolyMeshFindCellsCellOnTheCylinder)
+{
+    checkFindCell(cylinderMesh());
+}
+
+TEST(UnstructuredFindCell, PolyMeshFindCellsCellOnTheWarpedBox)
+{
+    checkFindCell(warpedMesh());
+}
+
+
+// A linear field anywhere in each mesh, the boundary cells too, exactly
+// (1e-12, round-off); weights adding up to 1; the walk's stencils those of
+// a fresh search, on 2 threads
+TEST(UnstructuredInterpolation, LinearFieldExactlyOnTheBox)
+{
+    checkLinear(boxMesh());
+}
+
+TEST(UnstructuredInterpolation, LinearFieldExactlyOnTheCylinder)
+{
+    checkLinear(cylinderMesh());
+}
+
+TEST(UnstructuredInterpolation, LinearFieldExactlyOnTheWarpedBox)
+{
+    checkLinear(warpedMesh());
+}
+
+
 int main(int argc, char *argv[])
 {
+    // GoogleTest's options first, then OpenFOAM's (-case <dir>); the
+    // process ends with the tests' status (couplingTestMain.H)
+    testing::InitGoogleTest(&argc, argv);
     argList::noParallel();
     #include "setRootCase.H"
     #include "createTime.H"
-
-    FatalError.throwExceptions();
-    FatalIOError.throwExceptions();
 
     auto load = [&runTime](const word& region)
     {
@@ -299,22 +388,17 @@ int main(int argc, char *argv[])
         warped->movePoints(moved);
     }
 
-    checkSelectionAndRefusals(box(), thin());
-    for (const fvMesh* mesh : {box.get(), cylinder.get(), warped.get()})
-    {
-        const unstructuredGrid grid(*mesh);
-        grid.report(Info);
-        checkFindCell(*mesh, grid);
-        checkLinear(*mesh, grid);
-        if (mesh == box.get()) checkTrilinear(*mesh, grid);
-    }
-    checkSharesAgainstCartesian(box());
-    checkSharesOnCylinder(cylinder());
+    meshes_ = {box.get(), cylinder.get(), thin.get(), warped.get()};
+    const int status = RUN_ALL_TESTS();
+    meshes_ = {};
+    box.clear();
+    cylinder.clear();
+    thin.clear();
+    warped.clear();
 
-    FatalError.dontThrowExceptions();
-    FatalIOError.dontThrowExceptions();
-    reportChecks();
-    return 0;
+    // Not a return: args's destructor would end the process with status 0
+    UPstream::exit(status);
+    return status;
 }
 
 

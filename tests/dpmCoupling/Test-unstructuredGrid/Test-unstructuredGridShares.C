@@ -12,14 +12,13 @@ License
     exact sphere-box volumes of cartesianGrid (forEachSphereBoxOverlap.H,
     checked against a quadrature by Test-sphereBoxOverlap) on the box, its
     error's convergence with the number of points, and on the cylinder the
-    volume and the forces the shares hand over.
+    volume and the forces the shares hand over (suite UnstructuredShares).
 \*---------------------------------------------------------------------------*/
 
 #include "unstructuredGridTests.H"
 #include "voidageModel.H"
 #include "IStringStream.H"
 #include "mathematicalConstants.H"
-#include "unitChecks.H"
 
 using namespace Foam;
 
@@ -49,17 +48,18 @@ scalar worstShareError
 } // End anonymous namespace
 
 
-void Foam::checkSharesAgainstCartesian(const fvMesh& box)
+// The cell (2, 2, 2): 20 to 30 mm each way. A particle a cell across
+// at its centre, on its face, edge and corner; a sphere spread over
+// two cells at the corner. The design's aim, 1 % of the sphere's volume in
+// any cell, is the tolerance; at a face a plane through the centre halves
+// the points exactly (1e-14)
+TEST(UnstructuredShares, ExactAtACentreFaceEdgeAndCornerOfTheBox)
 {
+    const fvMesh& box = boxMesh();
     const cartesianGrid exact(box);
     const unstructuredGrid grid(box);
     const scalar h = exact.dx();
     const label N = grid.quadrature().size();
-
-    // The cell (2, 2, 2): 20 to 30 mm each way. A particle a cell across
-    // at its centre, on its face, edge and corner; a sphere spread over
-    // two cells at the corner. The design's aim, 1 % of the sphere's
-    // volume in any cell, is the tolerance
     const scalar tol = 0.01;
     const point centre(0.025, 0.025, 0.025);
     const vector offsets[] =
@@ -89,9 +89,12 @@ void Foam::checkSharesAgainstCartesian(const fvMesh& box)
         "spread over 2h at a corner: the exact shares, worst cell",
         1 + worstShareError(grid, exact, centre + h*offsets[3], h, 2*h), 1, tol
     );
+}
 
-    // Anywhere in the box, the walls included (a part beyond stays with
-    // the cell inside, as cartesianGrid's)
+
+//- 4000 places at random in the box (seed 11)
+static List<point> randomPlaces(const fvMesh& box)
+{
     Random rnd(11);
     const label nSpheres = 4000;
     List<point> at(nSpheres);
@@ -99,6 +102,22 @@ void Foam::checkSharesAgainstCartesian(const fvMesh& box)
     {
         p = box.bounds().min() + cmptMultiply(box.bounds().span(), rnd.sample01<vector>());
     }
+    return at;
+}
+
+
+// Anywhere in the box, the walls included (a part beyond stays with
+// the cell inside, as cartesianGrid's): the exact shares, 1 % of the
+// sphere in the worst cell (the design's aim)
+TEST(UnstructuredShares, ExactAtRandomPlacesInTheBox)
+{
+    const fvMesh& box = boxMesh();
+    const cartesianGrid exact(box);
+    const unstructuredGrid grid(box);
+    const scalar h = exact.dx();
+    const scalar tol = 0.01;
+    const List<point> at(randomPlaces(box));
+    const label nSpheres = at.size();
     scalar worst = 0, rms = 0;
     for (const point& p : at)
     {
@@ -109,10 +128,18 @@ void Foam::checkSharesAgainstCartesian(const fvMesh& box)
     Info<< "    random places: worst cell " << worst << ", rms " << std::sqrt(rms)
         << " of the sphere" << endl;
     check("shares at " + std::to_string(nSpheres) + " random places (d = h): exact, worst cell", 1 + worst, 1, tol);
+}
 
-    // The error's convergence with N (shells x directions), over 400 of
-    // the random places: below 1/2 from 512 to 8192 points (a point set's
-    // error for a convex cut falls as N^(-1/2) to N^(-2/3))
+
+// The error's convergence with N (shells x directions), over 400 of the
+// random places: below 1/2 from 512 to 8192 points (a point set's error
+// for a convex cut falls as N^(-1/2) to N^(-2/3))
+TEST(UnstructuredShares, ErrorFallsWithTheQuadraturesPoints)
+{
+    const fvMesh& box = boxMesh();
+    const cartesianGrid exact(box);
+    const scalar h = exact.dx();
+    const List<point> at(randomPlaces(box));
     const label sizes[][2] = {{4, 64}, {8, 64}, {8, 128}, {16, 128}, {24, 128}, {32, 256}};
     scalar at512 = 0, at8192 = 0;
     Info<< "    N      worst cell    rms   (d = h, 400 places)" << endl;
@@ -134,23 +161,41 @@ void Foam::checkSharesAgainstCartesian(const fvMesh& box)
 }
 
 
-void Foam::checkSharesOnCylinder(const fvMesh& cylinder)
+//- 3000 particles anywhere in the cylinder (beside the curved wall part of
+//  a sphere lies beyond it), seed 19
+static void cylinderParticles
+(
+    const fvMesh& cylinder,
+    Random& rnd,
+    List<double>& x,
+    List<double>& y,
+    List<double>& z
+)
 {
-    const scalar pi = constant::mathematical::pi;
-    const unstructuredGrid grid(cylinder);
-    const scalarField& Vc = grid.cellVolumes();
-    const scalar d = 0.9*grid.minCellSize();
-
-    // 3000 particles anywhere in the cylinder (beside the curved wall part
-    // of a sphere lies beyond it)
-    Random rnd(19);
     const label n = 3000;
-    List<double> x(n), y(n), z(n), dp(n, d);
+    x.setSize(n); y.setSize(n); z.setSize(n);
     for (label i = 0; i < n; ++i)
     {
         const point p = randomPointInside(cylinder, rnd);
         x[i] = p.x(); y[i] = p.y(); z[i] = p.z();
     }
+}
+
+
+// The shares of 3000 particles (d = 0.9 h) on the cylinder, and spread over
+// 2 cells: they add up to 1 (1e-13, round-off) and are >= 0; the same bit
+// for bit on 2 threads; a force handed to the cells by them keeps the
+// particles' sum (1e-14, round-off)
+TEST(UnstructuredShares, SumSignThreadsAndReactionOnTheCylinder)
+{
+    const fvMesh& cylinder = cylinderMesh();
+    const unstructuredGrid grid(cylinder);
+    const scalar d = 0.9*grid.minCellSize();
+    Random rnd(19);
+    List<double> x, y, z;
+    cylinderParticles(cylinder, rnd, x, y, z);
+    const label n = x.size();
+    const List<double> dp(n, d);
     for (const scalar Ds : {scalar(0), 2*grid.minCellSize()})
     {
         const std::string m = Ds > 0 ? " (spread over 2 cells)" : " (d = 0.9 h)";
@@ -196,8 +241,23 @@ void Foam::checkSharesOnCylinder(const fvMesh& cylinder)
         }
         check("the reaction: the cells' force sum = the particles'" + m, 1 + mag(sum(Fc) - Fp)/(0.25*n), 1, 1e-14);
     }
+}
 
-    // voidageModel spheres3D on it: the mapped volume is the particles'
+
+// voidageModel spheres3D on the cylinder: the mapped volume is the 3000
+// particles' (1e-12, round-off), also spread
+TEST(UnstructuredShares, Spheres3DMapsTheParticlesVolumeOnTheCylinder)
+{
+    const scalar pi = constant::mathematical::pi;
+    const fvMesh& cylinder = cylinderMesh();
+    const unstructuredGrid grid(cylinder);
+    const scalarField& Vc = grid.cellVolumes();
+    const scalar d = 0.9*grid.minCellSize();
+    Random rnd(19);
+    List<double> x, y, z;
+    cylinderParticles(cylinder, rnd, x, y, z);
+    const label n = x.size();
+    const List<double> dp(n, d);
     for (const char* entries :
     {
         "voidageModel spheres3D;",
