@@ -12,7 +12,7 @@ Application
     Test-unstructuredGrid
 
 Description
-    Checks of the gas grid of any 3D mesh (unstructuredGrid) on three
+    Checks of the gas grid of any 3D mesh (unstructuredGrid) on four
     meshes of blockMesh (the case's regions): box, a uniform 6 x 6 x 6
     grid of 10 mm cells, where cartesianGrid's exact answers are known;
     cylinder, an O-grid 100 mm across (1320 hexes, curved and skewed);
@@ -22,9 +22,14 @@ Description
       cell thick, the disc and column shares, voidageModel discs2D;
     - findCell: polyMesh::findCell's cell at random points, also by the
       walk from a far cell, -1 outside (box, cylinder, warped);
-    - interpolation: a linear field exactly (round-off) on those three;
-      on the box trilinear's stencil at the centres and mesh points, and
-      within 3h^2/2 of trilinear for |x|^2 (derived in its test);
+    - interpolation, on those three, at random points and beside every
+      boundary face: every weight >= 0, the weights adding up to 1, a
+      constant voidage the constant, a voidage within its cells' values; a
+      linear field exactly in the cells off the boundary, and within the
+      bound |g| D anywhere (derived in checkLinear; on the box h/2 (|g_x| +
+      |g_y| + |g_z|)); on the box trilinear's stencil at the centres and
+      inner points, and within 3h^2/2 of trilinear for |x|^2 in the cells
+      off the walls (derived in its test);
     - the shares (Test-unstructuredGridShares.C).
     GoogleTest cases (suites UnstructuredGridSelection, UnstructuredFindCell,
     UnstructuredInterpolation and UnstructuredShares), run in the case
@@ -39,6 +44,7 @@ Description
 #include "unstructuredGridTests.H"
 #include "voidageModel.H"
 #include "IStringStream.H"
+#include "bitSet.H"
 
 using namespace Foam;
 
@@ -178,45 +184,219 @@ void checkFindCell(const fvMesh& mesh)
 }
 
 
-void checkLinear(const fvMesh& mesh)
+//- Points for the interpolation's checks on mesh: n at random inside, and
+//  beside every boundary face, its centre and its points each moved a
+//  millionth of the way to the owner's centre (walls, edges, corners);
+//  with outside, each of those also moved a tenth of a cell beyond
+//  the face (the nearest cell's value). The cell of each: the octree's,
+//  the owner's beside a face
+void checkPoints
+(
+    const fvMesh& mesh,
+    Random& rnd,
+    const label n,
+    const bool outside,
+    List<double>& x,
+    List<double>& y,
+    List<double>& z,
+    labelList& cells
+)
+{
+    DynamicList<point> at;
+    DynamicList<label> in;
+    for (label i = 0; i < n; ++i)
+    {
+        at.append(randomPointInside(mesh, rnd));
+        in.append(mesh.findCell(at.last()));
+    }
+    for (label facei = mesh.nInternalFaces(); facei < mesh.nFaces(); ++facei)
+    {
+        const point& C = mesh.C()[mesh.faceOwner()[facei]];
+        const vector n = mesh.faceAreas()[facei]/mag(mesh.faceAreas()[facei]);
+        const scalar h = mag(C - mesh.faceCentres()[facei]);
+        DynamicList<point> on(1, mesh.faceCentres()[facei]);
+        for (const label pointi : mesh.faces()[facei])
+        {
+            on.append(mesh.points()[pointi]);
+        }
+        for (const point& p : on)
+        {
+            at.append(p + 1e-6*(C - p));
+            in.append(mesh.faceOwner()[facei]);
+            if (outside)
+            {
+                at.append(p + 0.2*h*n);
+                in.append(mesh.faceOwner()[facei]);
+            }
+        }
+    }
+    x.setSize(at.size()); y.setSize(at.size()); z.setSize(at.size());
+    forAll(at, i) { x[i] = at[i].x(); y[i] = at[i].y(); z[i] = at[i].z(); }
+    cells.transfer(in);
+}
+
+
+//- Every stencil's weights >= 0 (exactly) and adding up to 1 (1e-12);
+//  a constant voidage interpolated is the constant and a voidage between
+//  0.4 and 1 stays between its stencil's least and largest cell values,
+//  up to the round-off of a sum of at most S terms (S 2^-53 relative, S
+//  the most cells of a stencil)
+void checkWeights(const fvMesh& mesh)
 {
     const unstructuredGrid grid(mesh);
-    // A linear field at the cell centres comes out exactly anywhere in the
-    // mesh, the boundary cells too
+    Random rnd(23);
+    List<double> x, y, z;
+    labelList cells;
+    checkPoints(mesh, rnd, 20000, true, x, y, z, cells);
+    const label n = x.size();
+    cellWeights w;
+    grid.interpolationStencils(n, x.cdata(), y.cdata(), z.cdata(), 1, w);
+
+    scalarField eps(mesh.nCells());
+    forAll(eps, c) eps[c] = 0.4 + 0.6*rnd.sample01<scalar>();
+    const scalarField constant(mesh.nCells(), 0.37);
+    const scalar roundOff = w.stride*std::pow(2.0, -53);
+    scalar lowest = GREAT, worstSum = 0, worstConstant = 0, overshoot = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        scalar sum = 0, least = GREAT, largest = -GREAT;
+        for (label k = w.stride*i; k < w.stride*i + w.counts[i]; ++k)
+        {
+            lowest = min(lowest, w.weights[k]);
+            sum += w.weights[k];
+            least = min(least, eps[w.cells[k]]);
+            largest = max(largest, eps[w.cells[k]]);
+        }
+        worstSum = max(worstSum, mag(sum - 1));
+        worstConstant = max(worstConstant, mag(w.interpolate(i, constant)/0.37 - 1));
+        const scalar e = w.interpolate(i, eps);
+        overshoot = max(overshoot, max(least - e, e - largest)/largest);
+    }
+    const std::string m =
+        " (" + mesh.name() + ", " + std::to_string(n) + " points, walls too)";
+    check("stencil weights >= 0" + m, lowest >= 0, 1, 0);
+    check("stencil weights add up to 1" + m, 1 + worstSum, 1, 1e-12);
+    check("a constant voidage: the constant" + m, 1 + worstConstant, 1, roundOff);
+    check("a voidage within its stencil's cell values" + m, 1 + max(overshoot, scalar(0)), 1, roundOff);
+}
+
+
+//- A linear field (gradient g) on mesh: exactly (1e-12, the point weights'
+//  tolerance 1e-13 of a cell, and round-off) in the cells none of whose
+//  points is on the boundary; in any cell off by at most |g| D, D the
+//  largest distance of a point of the cell from a cell centre around that
+//  point (a convex combination of those centres is within D of the
+//  point). Prints the largest error over |g| h, h the cell's width (its
+//  volume over its largest face). The walk's stencils, on 2 threads, are
+//  a fresh search's.
+scalar checkLinear(const fvMesh& mesh)
+{
+    const unstructuredGrid grid(mesh);
     const vector slope(3, -2, 5);
     scalarField f(mesh.nCells());
     forAll(f, c) f[c] = 1 + (slope & mesh.C()[c]);
 
-    Random rnd(7);
-    const label n = 20000;
-    List<double> x(n), y(n), z(n);
-    for (label i = 0; i < n; ++i)
+    // Each cell's D, width, and whether a point of it is on the boundary
+    bitSet onBoundary(mesh.nPoints());
+    for (label facei = mesh.nInternalFaces(); facei < mesh.nFaces(); ++facei)
     {
-        const point p = randomPointInside(mesh, rnd);
-        x[i] = p.x(); y[i] = p.y(); z[i] = p.z();
+        for (const label pointi : mesh.faces()[facei]) onBoundary.set(pointi);
     }
+    scalarField D(mesh.nCells(), 0), width(mesh.nCells(), 0);
+    bitSet inner(mesh.nCells(), true);
+    forAll(D, c)
+    {
+        for (const label pointi : mesh.cellPoints()[c])
+        {
+            if (onBoundary.test(pointi)) inner.unset(c);
+            for (const label celli : mesh.pointCells()[pointi])
+            {
+                D[c] = max(D[c], mag(mesh.C()[celli] - mesh.points()[pointi]));
+            }
+        }
+        scalar largestFace = 0;
+        for (const label facei : mesh.cells()[c])
+        {
+            largestFace = max(largestFace, mag(mesh.faceAreas()[facei]));
+        }
+        width[c] = mesh.V()[c]/largestFace;
+    }
+
+    Random rnd(7);
+    List<double> x, y, z;
+    labelList cells;
+    checkPoints(mesh, rnd, 20000, false, x, y, z, cells);
+    const label n = x.size();
     cellWeights w;
     grid.interpolationStencils(n, x.cdata(), y.cdata(), z.cdata(), 1, w);
-    scalar worst = 0, worstSum = 0, most = 0, largest = 0;
+    scalar worstInner = 0, worstInnerOfh = 0, worstOverBound = 0, worstOfh = 0;
+    label nInner = 0;
     for (label i = 0; i < n; ++i)
     {
         const point p(x[i], y[i], z[i]);
-        worst = max(worst, mag(w.interpolate(i, f) - (1 + (slope & p))));
-        scalar sum = 0, sumMag = 0;
-        for (label k = w.stride*i; k < w.stride*i + w.counts[i]; ++k)
+        const label c = cells[i];
+        const scalar e = mag(w.interpolate(i, f) - (1 + (slope & p)));
+        if (inner.test(c))
         {
-            sum += w.weights[k];
-            sumMag += mag(w.weights[k]);
+            worstInner = max(worstInner, e);
+            worstInnerOfh = max(worstInnerOfh, e/(mag(slope)*width[c]));
+            ++nInner;
         }
-        worstSum = max(worstSum, mag(sum - 1));
-        largest = max(largest, sumMag);
-        most = max(most, scalar(w.counts[i]));
+        worstOverBound = max(worstOverBound, e/(mag(slope)*D[c]));
+        worstOfh = max(worstOfh, e/(mag(slope)*width[c]));
     }
-    const std::string m = " (" + mesh.name() + ", worst of 2e4)";
-    Info<< "    stencils of up to " << most << " cells, sum |w| up to "
-        << largest << m.c_str() << endl;
-    check("a linear field exactly" + m, 1 + worst, 1, 1e-12);
-    check("stencil weights add up to 1" + m, 1 + worstSum, 1, 1e-12);
+    const std::string m = " (" + mesh.name() + ", " + std::to_string(n) + " points)";
+    Info<< "    a linear field: error up to " << worstOfh << " |g| h, "
+        << worstOverBound << " of the bound |g| D; off the boundary "
+        << worstInnerOfh << " |g| h" << m.c_str() << endl;
+    check("a linear field exactly in the cells off the boundary (" + std::to_string(nInner) + " of the points)" + m, 1 + worstInner, 1, 1e-12);
+    check("a linear field within |g| D anywhere" + m, worstOverBound <= 1 + 1e-12, 1, 0);
+
+    // At a point of one wall (its boundary faces' normals within 30
+    // degrees of their mean n: not an edge or a corner) a field linear
+    // along the wall comes out exactly: the point's cells' mean centre
+    // (interpolated at the point, moved 1e-9 of the way to a cell's
+    // centre: the other corners of its tet weigh about 1e-9, each shifted
+    // by at most D) lies on the wall's normal through it, to 1e-6 D
+    {
+        DynamicList<point> at;
+        DynamicList<vector> normal;
+        DynamicList<scalar> within;
+        for (const label pointi : onBoundary)
+        {
+            vector sum(Zero);
+            for (const label facei : mesh.pointFaces()[pointi])
+            {
+                if (!mesh.isInternalFace(facei)) sum += mesh.faceAreas()[facei];
+            }
+            const vector nMean = sum/mag(sum);
+            bool oneWall = true;
+            for (const label facei : mesh.pointFaces()[pointi])
+            {
+                if (mesh.isInternalFace(facei)) continue;
+                const vector& Sf = mesh.faceAreas()[facei];
+                oneWall = oneWall && (Sf & nMean) > 0.866*mag(Sf);
+            }
+            if (!oneWall) continue;
+            const point& v = mesh.points()[pointi];
+            const label c = mesh.pointCells()[pointi][0];
+            at.append(v + 1e-9*(mesh.C()[c] - v));
+            normal.append(nMean);
+            within.append(D[c]);
+        }
+        List<double> px(at.size()), py(at.size()), pz(at.size());
+        forAll(at, i) { px[i] = at[i].x(); py[i] = at[i].y(); pz[i] = at[i].z(); }
+        cellWeights pw;
+        grid.interpolationStencils(at.size(), px.cdata(), py.cdata(), pz.cdata(), 1, pw);
+        scalar worstAlong = 0;
+        forAll(at, i)
+        {
+            const vector delta = pw.interpolate(i, mesh.C()) - at[i];
+            const vector along = delta - (delta & normal[i])*normal[i];
+            worstAlong = max(worstAlong, mag(along)/within[i]);
+        }
+        check("a field linear along the wall exactly at its points (" + std::to_string(at.size()) + " points of one wall; the mean centre's shift along the wall / D)" + m, 1 + worstAlong, 1, 1e-6);
+    }
 
     // Moved on and interpolated again: the walk from the last cells gives
     // the same stencils as a fresh grid's octree search
@@ -230,6 +410,7 @@ void checkLinear(const fvMesh& mesh)
     const unstructuredGrid freshGrid(mesh, 2, 2);
     freshGrid.interpolationStencils(n, x.cdata(), y.cdata(), z.cdata(), 1, fresh);
     check("from the last cells, on 2 threads: the stencils of a fresh search" + m, sameWeights(again, fresh), 1, 0);
+    return worstOfh;
 }
 
 
@@ -265,7 +446,7 @@ TEST(UnstructuredInterpolation, TrilinearsStencilAtCentresAndInnerPointsOfTheBox
 }
 
 
-// f = |x - x0|^2 between the outer centres of the box: within 3h^2/2 of
+// f = |x - x0|^2 in the box's cells off the walls: within 3h^2/2 of
 // trilinear (derived below), and not below the convex field
 TEST(UnstructuredInterpolation, SquareDistanceWithinThreeHalvesHSquaredOfTrilinearOnTheBox)
 {
@@ -280,7 +461,9 @@ TEST(UnstructuredInterpolation, SquareDistanceWithinThreeHalvesHSquaredOfTriline
     List<double> x, y, z;
     cellWeights u, t;
 
-    // f = |x - x0|^2 between the outer centres. Trilinear's error is
+    // f = |x - x0|^2 in the cells off the walls (h to 5h each way), whose
+    // points are all inner points (a wall point's value, its cells' mean,
+    // is off by a first-order term: checkLinear). Trilinear's error is
     // sum fx(1 - fx) h^2, in [0, 3h^2/4]; the cell-point one, a tet of the
     // cell centre (the exact value) and three corners (the mean of eight
     // centres, 3h^2/4 high), is sum l_i e_i + sum l_i |v_i - p|^2 in
@@ -294,7 +477,7 @@ TEST(UnstructuredInterpolation, SquareDistanceWithinThreeHalvesHSquaredOfTriline
     for (label i = 0; i < n; ++i)
     {
         const vector s = rnd.sample01<vector>();
-        x[i] = 0.5*h + s.x()*5*h; y[i] = 0.5*h + s.y()*5*h; z[i] = 0.5*h + s.z()*5*h;
+        x[i] = h + s.x()*4*h; y[i] = h + s.y()*4*h; z[i] = h + s.z()*4*h;
     }
     grid.interpolationStencils(n, x.cdata(), y.cdata(), z.cdata(), 1, u);
     cartesian.interpolationStencils(n, x.cdata(), y.cdata(), z.cdata(), 1, t);
@@ -332,20 +515,43 @@ TEST(UnstructuredFindCell, PolyMeshFindCellsCellOnTheWarpedBox)
 }
 
 
-// A linear field anywhere in each mesh, the boundary cells too, exactly
-// (1e-12, round-off); weights adding up to 1; the walk's stencils those of
-// a fresh search, on 2 threads
-TEST(UnstructuredInterpolation, LinearFieldExactlyOnTheBox)
+// Every stencil's weights >= 0 and adding up to 1, at random points and
+// beside every boundary face (and beyond it): a constant voidage comes out
+// as the constant, any voidage within its cells' values
+TEST(UnstructuredInterpolation, WeightsNonNegativeAddingUpToOneOnTheBox)
 {
-    checkLinear(boxMesh());
+    checkWeights(boxMesh());
 }
 
-TEST(UnstructuredInterpolation, LinearFieldExactlyOnTheCylinder)
+TEST(UnstructuredInterpolation, WeightsNonNegativeAddingUpToOneOnTheCylinder)
+{
+    checkWeights(cylinderMesh());
+}
+
+TEST(UnstructuredInterpolation, WeightsNonNegativeAddingUpToOneOnTheWarpedBox)
+{
+    checkWeights(warpedMesh());
+}
+
+
+// A linear field: exactly off the boundary, within |g| D anywhere (in
+// checkLinear). On the box, beside the walls, at most h/2 (|g_x| + |g_y|
+// + |g_z|): a wall point's value is the mean of its cells (inverse
+// distance's weights, equal by symmetry), whose centres lie h/2 inside
+// each of its walls, and the tet's coordinates add up to 1
+TEST(UnstructuredInterpolation, LinearFieldExactOffTheWallsOnTheBox)
+{
+    const scalar worst = checkLinear(boxMesh());
+    const vector g(3, -2, 5);
+    check("box: a linear field within h/2 (|g_x| + |g_y| + |g_z|)", worst <= (1 + 1e-12)*0.5*cmptSum(cmptMag(g))/mag(g), 1, 0);
+}
+
+TEST(UnstructuredInterpolation, LinearFieldExactOffTheWallsOnTheCylinder)
 {
     checkLinear(cylinderMesh());
 }
 
-TEST(UnstructuredInterpolation, LinearFieldExactlyOnTheWarpedBox)
+TEST(UnstructuredInterpolation, LinearFieldExactOffTheWallsOnTheWarpedBox)
 {
     checkLinear(warpedMesh());
 }

@@ -102,6 +102,7 @@ Foam::unstructuredGrid::unstructuredGrid
     depth_(mesh.bounds().span().z()),
     minWidth_(0),
     maxWidth_(0),
+    nInexactPoints_(0),
     stencilStride_(0)
 {
     checkResolvedInDepth();
@@ -193,7 +194,9 @@ void Foam::unstructuredGrid::report(Ostream& os) const
         << "resolved in 3D), " << depth_*1e3 << " mm deep, cells "
         << minWidth_*1e3 << " to " << maxWidth_*1e3 << " mm wide (volume /"
         << " largest face), shares of a sphere by " << quadrature_.size()
-        << " points" << nl;
+        << " points" << nl
+        << "    mesh points whose cells' centres do not surround them (a"
+        << " linear field inexact beside them): " << nInexactPoints_ << nl;
 }
 
 

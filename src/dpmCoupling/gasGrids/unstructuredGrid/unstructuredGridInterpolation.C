@@ -10,8 +10,11 @@ License
 -------------------------------------------------------------------------------
     unstructuredGrid: the interpolation, OpenFOAM's cell-point idea (the
     tet of the cell holding the particle, between the cell centre and three
-    mesh points) with each point's value a least-squares linear fit to the
-    cells around it, so that a linear field comes out exactly.
+    mesh points) with each point's value a positive-weight mean of the
+    cells around it: the maximum-entropy weights nearest inverse distance
+    whose mean centre is the point (along the walls at a boundary point),
+    so that every weight is >= 0 and a linear field comes out exactly
+    wherever the cells' centres surround the points (unstructuredGrid.H).
 \*---------------------------------------------------------------------------*/
 
 #include "unstructuredGrid.H"
@@ -26,61 +29,157 @@ namespace
 
 using namespace Foam;
 
-//- The weights w_i (q_i . y) of the value at the origin of the linear fit
-//  a + g.x to values at the points x (weights 1/|x|^2), A y = e0 with
-//  A = sum w q q^T, q = (1, x/h); false when A is singular (the points in
-//  one plane)
-bool linearFitWeights(const List<vector>& x, scalarList& weights)
+//- Solve the d x d system A x = b (d <= 3) by Gaussian elimination with
+//  partial pivoting; false when a pivot is below 1e-14 of the largest
+//  diagonal entry
+bool solveSmall(const label d, double A[3][3], double b[3], double x[3])
 {
-    const label n = x.size();
-    scalar h = 0;
-    for (const vector& xi : x) h = max(h, mag(xi));
-    if (n < 4 || h <= 0) return false;
-
-    double A[4][5] = {};
-    scalarList w(n);
-    for (label i = 0; i < n; ++i)
-    {
-        w[i] = 1/magSqr(x[i]/h);
-        const double q[4] = {1, x[i].x()/h, x[i].y()/h, x[i].z()/h};
-        for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c)
-        {
-            A[r][c] += w[i]*q[r]*q[c];
-        }
-    }
-    A[0][4] = 1;
-
-    // Gaussian elimination with partial pivoting; a pivot below 1e-10 of
-    // the largest diagonal entry is a singular fit
     double largest = 0;
-    for (int r = 0; r < 4; ++r) largest = std::max(largest, A[r][r]);
-    for (int c = 0; c < 4; ++c)
+    for (label r = 0; r < d; ++r)
     {
-        int pivot = c;
-        for (int r = c + 1; r < 4; ++r)
+        largest = std::max(largest, std::abs(A[r][r]));
+    }
+    for (label c = 0; c < d; ++c)
+    {
+        label pivot = c;
+        for (label r = c + 1; r < d; ++r)
         {
             if (std::abs(A[r][c]) > std::abs(A[pivot][c])) pivot = r;
         }
-        if (std::abs(A[pivot][c]) < 1e-10*largest) return false;
-        for (int k = 0; k < 5; ++k) std::swap(A[c][k], A[pivot][k]);
-        for (int r = 0; r < 4; ++r)
+        if (!(std::abs(A[pivot][c]) > 1e-14*largest)) return false;
+        for (label k = 0; k < d; ++k) std::swap(A[c][k], A[pivot][k]);
+        std::swap(b[c], b[pivot]);
+        for (label r = c + 1; r < d; ++r)
         {
-            if (r == c) continue;
             const double f = A[r][c]/A[c][c];
-            for (int k = c; k < 5; ++k) A[r][k] -= f*A[c][k];
+            for (label k = c; k < d; ++k) A[r][k] -= f*A[c][k];
+            b[r] -= f*b[c];
         }
     }
-    double y[4];
-    for (int r = 0; r < 4; ++r) y[r] = A[r][4]/A[r][r];
-
-    weights.setSize(n);
-    for (label i = 0; i < n; ++i)
+    for (label r = d - 1; r >= 0; --r)
     {
-        weights[i] =
-            w[i]*(y[0] + (y[1]*x[i].x() + y[2]*x[i].y() + y[3]*x[i].z())/h);
+        double s = b[r];
+        for (label k = r + 1; k < d; ++k) s -= A[r][k]*x[k];
+        x[r] = s/A[r][r];
     }
     return true;
+}
+
+
+//- The maximum-entropy weights of the values at the offsets y_i (d <= 3
+//  components each, scaled to about 1) relative to the prior q_i: the
+//  weights w_i = q_i exp(-lambda.y_i)/Z closest to q (relative entropy)
+//  whose mean offset sum w_i y_i is zero, lambda minimising log Z by
+//  Newton's method with halved steps. The weights are positive and add up
+//  to 1 whatever lambda; the mean offset is zero (to 1e-13) when the
+//  origin lies inside the convex hull of the y_i, and otherwise as small
+//  as 100 steps with |lambda| <= 1000 make it. Returns |sum w_i y_i|.
+scalar maxEntropyWeights
+(
+    const label d,
+    const List<FixedList<double, 3>>& y,
+    const scalarList& q,
+    scalarList& w
+)
+{
+    const label n = y.size();
+    w.setSize(n);
+    double lambda[3] = {0, 0, 0};
+
+    // log Z at lambda and, into w, the weights
+    auto logZ = [&](const double l[3])
+    {
+        double top = -GREAT;
+        for (label i = 0; i < n; ++i)
+        {
+            double a = std::log(q[i]);
+            for (label k = 0; k < d; ++k) a -= l[k]*y[i][k];
+            w[i] = a;
+            top = std::max(top, a);
+        }
+        double Z = 0;
+        for (label i = 0; i < n; ++i)
+        {
+            w[i] = std::exp(w[i] - top);
+            Z += w[i];
+        }
+        for (label i = 0; i < n; ++i) w[i] /= Z;
+        return top + std::log(Z);
+    };
+    auto mean = [&](double m[3])
+    {
+        double size = 0;
+        for (label k = 0; k < d; ++k)
+        {
+            m[k] = 0;
+            for (label i = 0; i < n; ++i) m[k] += w[i]*y[i][k];
+            size += m[k]*m[k];
+        }
+        return std::sqrt(size);
+    };
+
+    double F = logZ(lambda);
+    double m[3] = {0, 0, 0};
+    double residual = mean(m);
+    for (label step = 0; step < 100 && residual > 1e-13; ++step)
+    {
+        // The Hessian of log Z: the offsets' covariance under w
+        double H[3][3];
+        for (label r = 0; r < d; ++r)
+        for (label c = 0; c < d; ++c)
+        {
+            double s = 0;
+            for (label i = 0; i < n; ++i) s += w[i]*y[i][r]*y[i][c];
+            H[r][c] = s - m[r]*m[c];
+        }
+        // The gradient of log Z is -m: the Newton step solves H dl = m
+        double rhs[3] = {m[0], m[1], m[2]};
+        double dl[3] = {0, 0, 0};
+        if (!solveSmall(d, H, rhs, dl))
+        {
+            // The offsets span fewer than d directions: the gradient's
+            for (label k = 0; k < d; ++k) dl[k] = m[k];
+        }
+        // The step, halved until log Z falls; near the minimum, where the
+        // fall is below round-off, until the mean offset does
+        double t = 1;
+        double trial[3];
+        bool accepted = false;
+        for (label halving = 0; halving < 60 && !accepted; ++halving, t *= 0.5)
+        {
+            double size = 0;
+            for (label k = 0; k < 3; ++k)
+            {
+                trial[k] = lambda[k] + t*dl[k];
+                size += trial[k]*trial[k];
+            }
+            // Beyond |lambda| = 1000 (the offsets about 1) a weight is
+            // e^-1000 of another's: zero. The origin then lies outside the
+            // offsets' hull, and the weights stay as they are
+            if (!(size < 1e6)) continue;
+            const double Ft = logZ(trial);
+            double mt[3] = {0, 0, 0};
+            const double rt = mean(mt);
+            if (Ft < F || (Ft <= F + 1e-13*(1 + std::abs(F)) && rt < residual))
+            {
+                accepted = true;
+                F = Ft;
+                residual = rt;
+                for (label k = 0; k < 3; ++k)
+                {
+                    lambda[k] = trial[k];
+                    m[k] = mt[k];
+                }
+            }
+        }
+        if (!accepted)
+        {
+            // No step lowers either: the weights at lambda
+            logZ(lambda);
+            break;
+        }
+    }
+    return residual;
 }
 
 } // End anonymous namespace
@@ -92,58 +191,100 @@ void Foam::unstructuredGrid::makePointWeights()
 {
     const pointField& points = mesh_.points();
     const vectorField& C = mesh_.cellCentres();
+    const vectorField& Sf = mesh_.faceAreas();
     const labelListList& pointCells = mesh_.pointCells();
-    const labelListList& cellCells = mesh_.cellCells();
-
-    // The boundary's points: their cells' centres lie in one layer
-    boolList onBoundary(mesh_.nPoints(), false);
-    for (label facei = mesh_.nInternalFaces(); facei < mesh_.nFaces(); ++facei)
-    {
-        for (const label pointi : mesh_.faces()[facei])
-        {
-            onBoundary[pointi] = true;
-        }
-    }
+    const labelListList& pointFaces = mesh_.pointFaces();
 
     pointCells_.setSize(mesh_.nPoints());
     pointWeights_.setSize(mesh_.nPoints());
+    nInexactPoints_ = 0;
     forAll(points, pointi)
     {
-        labelHashSet cells(pointCells[pointi]);
-        if (onBoundary[pointi])
+        // The walls at the point: its boundary faces' normals, those within
+        // 30 degrees of each other one wall (a curved wall's faces), then
+        // made orthonormal (a box's edge two, its corner three)
+        DynamicList<vector> walls;
+        for (const label facei : pointFaces[pointi])
         {
-            for (const label celli : pointCells[pointi])
+            if (mesh_.isInternalFace(facei)) continue;
+            const vector n = Sf[facei]/mag(Sf[facei]);
+            bool joined = false;
+            for (vector& wall : walls)
             {
-                cells.insert(cellCells[celli]);
+                if ((n & (wall/mag(wall))) > 0.866)
+                {
+                    wall += Sf[facei];
+                    joined = true;
+                    break;
+                }
+            }
+            if (!joined) walls.append(Sf[facei]);
+        }
+        DynamicList<vector> normals;
+        for (const vector& wall : walls)
+        {
+            vector n = wall/mag(wall);
+            for (const vector& e : normals) n -= (n & e)*e;
+            if (normals.size() < 3 && mag(n) > 0.1) normals.append(n/mag(n));
+        }
+
+        // The directions along the walls, in which a linear field is kept
+        const label d = 3 - normals.size();
+        List<vector> along(d);
+        if (d == 3)
+        {
+            along[0] = vector(1, 0, 0);
+            along[1] = vector(0, 1, 0);
+            along[2] = vector(0, 0, 1);
+        }
+        else if (d == 2)
+        {
+            const vector& n = normals[0];
+            // The axis least along the normal
+            direction least = 0;
+            for (direction k = 1; k < 3; ++k)
+            {
+                if (mag(n[k]) < mag(n[least])) least = k;
+            }
+            vector a(Zero);
+            a[least] = 1;
+            a -= (a & n)*n;
+            along[0] = a/mag(a);
+            along[1] = n ^ along[0];
+        }
+        else if (d == 1)
+        {
+            const vector t = normals[0] ^ normals[1];
+            along[0] = t/mag(t);
+        }
+
+        // The cells' offsets from the point, along the walls, over the
+        // farthest; the prior: inverse distance (volPointInterpolation's)
+        const labelList& cells = pointCells[pointi];
+        const label n = cells.size();
+        scalar h = 0;
+        for (const label celli : cells)
+        {
+            h = max(h, mag(C[celli] - points[pointi]));
+        }
+        List<FixedList<double, 3>> y(n);
+        scalarList q(n);
+        forAll(cells, i)
+        {
+            const vector x = C[cells[i]] - points[pointi];
+            q[i] = 1/max(mag(x), SMALL*h);
+            for (label k = 0; k < 3; ++k)
+            {
+                y[i][k] = k < d ? (x & along[k])/h : 0;
             }
         }
-        for (label round = 0; ; ++round)
+        scalarList w;
+        if (maxEntropyWeights(d, y, q, w) > 1e-10)
         {
-            labelList cellList(cells.sortedToc());
-            List<vector> x(cellList.size());
-            forAll(cellList, k)
-            {
-                x[k] = C[cellList[k]] - points[pointi];
-            }
-            scalarList weights;
-            if (linearFitWeights(x, weights))
-            {
-                pointCells_[pointi].transfer(cellList);
-                pointWeights_[pointi].transfer(weights);
-                break;
-            }
-            if (round == 3)
-            {
-                FatalErrorInFunction
-                    << "No linear fit at point " << pointi << " "
-                    << points[pointi] << " from the cells around it "
-                    << cellList << exit(FatalError);
-            }
-            for (const label celli : cellList)
-            {
-                cells.insert(cellCells[celli]);
-            }
+            ++nInexactPoints_;
         }
+        pointCells_[pointi] = cells;
+        pointWeights_[pointi].transfer(w);
     }
 
     // A stencil: the cell and three of its points' cells
@@ -189,6 +330,17 @@ Foam::label Foam::unstructuredGrid::stencil
         ).pointToBarycentric(p)
     );
 
+    // Inside the tet the coordinates are >= 0; round-off (a point on a
+    // face) may leave one just below: clipped, the rest scaled to sum 1
+    scalar l[4];
+    scalar lSum = 0;
+    for (label k = 0; k < 4; ++k)
+    {
+        l[k] = max(b[k], scalar(0));
+        lSum += l[k];
+    }
+    for (label k = 0; k < 4; ++k) l[k] /= lSum;
+
     label count = 0;
     auto add = [&](const label c, const scalar w)
     {
@@ -204,14 +356,14 @@ Foam::label Foam::unstructuredGrid::stencil
         weights[count] = w;
         ++count;
     };
-    add(celli, b[0]);
+    add(celli, l[0]);
     for (label k = 0; k < 3; ++k)
     {
         const labelList& pc = pointCells_[tri[k]];
         const scalarList& pw = pointWeights_[tri[k]];
         forAll(pc, j)
         {
-            add(pc[j], b[k + 1]*pw[j]);
+            add(pc[j], l[k + 1]*pw[j]);
         }
     }
     return count;
