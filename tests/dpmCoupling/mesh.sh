@@ -9,8 +9,25 @@
 #   mesh.sh <workDir> netl    NETL's column, 38.1 mm square and 228.6 mm
 #                             tall, 4 x 24 x 4 cells with walls in front and
 #                             behind: Test-gasInDepth
+#   mesh.sh <workDir> unstructured
+#                             the case of Test-unstructuredGrid, its four
+#                             meshes as regions: box, cylinder, thin, warped
 . "$(dirname "${BASH_SOURCE[0]}")/../smoke/testFunctions" "$@"
-mesh="${2:?usage: $0 <workDir> paper|netl}"
+mesh="${2:?usage: $0 <workDir> paper|netl|unstructured}"
+
+if [ "$mesh" = unstructured ]
+then
+    cp -r "$testsDir/dpmCoupling/unstructuredGridCase" "$workDir/case" \
+        || fail "copy"
+    cd "$workDir/case" || fail "cd"
+    for region in box cylinder thin warped
+    do
+        blockMesh -region $region >log.blockMesh.$region 2>&1 \
+            || fail "blockMesh $region"
+    done
+    pass "$mesh meshes in $workDir/case"
+    exit 0
+fi
 
 cp -r "$testsDir/smoke/blockMeshCase" "$workDir/case" || fail "copy"
 cd "$workDir/case" || fail "cd"
@@ -21,7 +38,7 @@ netl)
         -e 's/0\.9 /0.2286 /g' -e 's/(20 120 1)/(4 24 4)/' \
         -e 's/type empty/type wall/' system/blockMeshDict || fail "3D mesh"
     ;;
-*) fail "unknown mesh $mesh (paper or netl)" ;;
+*) fail "unknown mesh $mesh (paper, netl or unstructured)" ;;
 esac
 blockMesh >log.blockMesh 2>&1 || fail "blockMesh"
 pass "$mesh mesh in $workDir/case"

@@ -22,7 +22,8 @@ Foam::autoPtr<Foam::gasGrid> Foam::gasGrid::New
     (
         dict, "gasGrid", meshConstructorTablePtr_->sortedToc(), "cartesian",
         "cartesian (a uniform Cartesian grid, one cell thick or resolved in"
-        " depth; default)"
+        " depth; default), unstructured (any mesh with cells through the"
+        " depth, the gas resolved in 3D: voidageModel spheres3D)"
     );
     return (*meshConstructorTablePtr_)[choice](mesh);
 }
