@@ -84,19 +84,6 @@ void expectSameBits(const SlabSystem& a, const SlabSystem& b, const char* what)
     }
 }
 
-/// The Kolmogorov-Smirnov distance of the values from the uniform distribution on [a, b].
-double ksUniform(std::vector<double> v, double a, double b)
-{
-    std::sort(v.begin(), v.end());
-    const double n = static_cast<double>(v.size());
-    double d = 0.0;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        const double f = (v[i] - a) / (b - a);
-        d = std::max({d, f - i / n, (i + 1) / n - f});
-    }
-    return d;
-}
-
 } // namespace
 
 TEST(CylinderBed, PackingFillsTheCylinderClearOfItsWall)

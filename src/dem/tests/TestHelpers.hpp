@@ -7,10 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 namespace dem::test {
 
@@ -118,6 +120,19 @@ inline double contactTime(double mEff, double kn, double e)
 {
     const double zeta = etaFor(mEff, kn, e) / (2.0 * std::sqrt(mEff * kn));
     return clampedContactEnd(zeta).time * std::sqrt(mEff / kn);
+}
+
+/// The Kolmogorov-Smirnov distance of the values from the uniform distribution on [a, b].
+inline double ksUniform(std::vector<double> v, double a, double b)
+{
+    std::sort(v.begin(), v.end());
+    const double n = static_cast<double>(v.size());
+    double d = 0.0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const double f = (v[i] - a) / (b - a);
+        d = std::max({d, f - i / n, (i + 1) / n - f});
+    }
+    return d;
 }
 
 } // namespace dem::test

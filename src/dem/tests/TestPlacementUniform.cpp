@@ -10,6 +10,7 @@
 // purpose (LaMarche et al. 2022, the data set's measurements.rst).
 
 #include "Placement.hpp"
+#include "TestHelpers.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,6 +19,7 @@
 #include <vector>
 
 using namespace dem;
+using dem::test::ksUniform;
 
 namespace {
 
@@ -35,19 +37,6 @@ Settings column()
     s.dimension = 3;
     s.slabDepth = side;
     return s;
-}
-
-/// The Kolmogorov-Smirnov distance of the values from the uniform distribution on [a, b].
-double ksUniform(std::vector<double> v, double a, double b)
-{
-    std::sort(v.begin(), v.end());
-    const double n = static_cast<double>(v.size());
-    double d = 0.0;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        const double f = (v[i] - a) / (b - a);
-        d = std::max({d, f - i / n, (i + 1) / n - f});
-    }
-    return d;
 }
 
 } // namespace
