@@ -20,6 +20,12 @@ then
     cp -r "$testsDir/dpmCoupling/unstructuredGridCase" "$workDir/case" \
         || fail "copy"
     cd "$workDir/case" || fail "cd"
+    # The smoke case's schemes and solution for the case and each region
+    for dir in system system/box system/cylinder system/thin system/warped
+    do
+        cp "$testsDir"/smoke/blockMeshCase/system/{fvSchemes,fvSolution} \
+            "$dir" || fail "copy the schemes into $dir"
+    done
     for region in box cylinder thin warped
     do
         blockMesh -region $region >log.blockMesh.$region 2>&1 \

@@ -44,8 +44,9 @@ void ThreadChooser::record(double seconds)
             // The last trialCalls calls on all threads, their slowest left out, against as
             // many of one thread's
             watched_[watchedCalls_++ % trialCalls] = seconds;
-            if (watchedCalls_ >= trialCalls
-                && meanWithoutSlowest(watched_) > oneMean_) {
+            const double watchedMean =
+                watchedCalls_ >= trialCalls ? meanWithoutSlowest(watched_) : 0.0;
+            if (watchedMean > oneMean_) {
                 // Slower than one thread was at the trial. At twice the trial's time on all
                 // threads within two watches of the hold's start: the trial caught a quiet
                 // moment beside a busy core (there a call waits a time slice every few), which
@@ -53,7 +54,7 @@ void ThreadChooser::record(double seconds)
                 // the step's cost did (a bed that settles or lifts); a new trial decides
                 ++holdsCutShort_;
                 if (watchedCalls_ <= 2 * trialCalls
-                    && meanWithoutSlowest(watched_) > 2.0 * meanWithoutSlowest(times_[1])) {
+                    && watchedMean > 2.0 * meanWithoutSlowest(times_[1])) {
                     hold(1);
                     return;
                 }

@@ -41,6 +41,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "couplingTestMain.H"
 #include "unstructuredGridTests.H"
 #include "voidageModel.H"
 #include "IStringStream.H"
@@ -559,52 +560,58 @@ TEST(UnstructuredInterpolation, LinearFieldExactOffTheWallsOnTheWarpedBox)
 
 int main(int argc, char *argv[])
 {
-    // GoogleTest's options first, then OpenFOAM's (-case <dir>); the
-    // process ends with the tests' status (couplingTestMain.H)
-    testing::InitGoogleTest(&argc, argv);
-    argList::noParallel();
-    #include "setRootCase.H"
-    #include "createTime.H"
-
-    auto load = [&runTime](const word& region)
-    {
-        return new fvMesh
-        (
-            IOobject(region, runTime.timeName(), runTime, IOobject::MUST_READ)
-        );
-    };
-    autoPtr<fvMesh> box(load("box"));
-    autoPtr<fvMesh> cylinder(load("cylinder"));
-    autoPtr<fvMesh> thin(load("thin"));
-    autoPtr<fvMesh> warped(load("warped"));
-
-    // The box's inner points moved at random by up to 0.2 h each way: its
-    // faces are warped, so a cell's face planes and its tets differ
-    {
-        Random rnd(41);
-        const boundBox bb = warped->bounds();
-        pointField moved(warped->points());
-        for (point& p : moved)
+    // The four meshes are regions of the case (couplingTestMain.H)
+    return couplingTest::mainWithTime
+    (
+        argc, argv,
+        [](const argList&, Time& runTime)
         {
-            if (min(cmptMin(p - bb.min()), cmptMin(bb.max() - p)) > 1e-9)
+            auto load = [&runTime](const word& region)
             {
-                p += 0.01*0.2*(2*rnd.sample01<vector>() - vector::one);
+                return autoPtr<fvMesh>
+                (
+                    new fvMesh
+                    (
+                        IOobject
+                        (
+                            region, runTime.timeName(), runTime,
+                            IOobject::MUST_READ
+                        )
+                    )
+                );
+            };
+            autoPtr<fvMesh> box(load("box"));
+            autoPtr<fvMesh> cylinder(load("cylinder"));
+            autoPtr<fvMesh> thin(load("thin"));
+            autoPtr<fvMesh> warped(load("warped"));
+
+            // The box's inner points moved at random by up to 0.2 h each
+            // way: its faces are warped, so a cell's face planes and its
+            // tets differ
+            {
+                Random rnd(41);
+                const boundBox bb = warped->bounds();
+                pointField moved(warped->points());
+                for (point& p : moved)
+                {
+                    if
+                    (
+                        min(cmptMin(p - bb.min()), cmptMin(bb.max() - p))
+                      > 1e-9
+                    )
+                    {
+                        p += 0.01*0.2*(2*rnd.sample01<vector>() - vector::one);
+                    }
+                }
+                warped->movePoints(moved);
             }
+
+            meshes_ = {box.get(), cylinder.get(), thin.get(), warped.get()};
+            const int status = RUN_ALL_TESTS();
+            meshes_ = {};
+            return status;
         }
-        warped->movePoints(moved);
-    }
-
-    meshes_ = {box.get(), cylinder.get(), thin.get(), warped.get()};
-    const int status = RUN_ALL_TESTS();
-    meshes_ = {};
-    box.clear();
-    cylinder.clear();
-    thin.clear();
-    warped.clear();
-
-    // Not a return: args's destructor would end the process with status 0
-    UPstream::exit(status);
-    return status;
+    );
 }
 
 

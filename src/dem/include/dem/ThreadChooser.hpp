@@ -24,12 +24,12 @@ public:
     /// within its first 2 trialCalls calls and at twice the trial's time on all threads, one
     /// thread holds (the trial caught a quiet moment beside a busy core, and a new one would
     /// catch another as often), else a new trial starts (a neighbour that started since, or a
-    /// step whose cost changed, is timed again on both teams). Two threads slower than one are kept for about trialCalls calls, not
-    /// a hold. Each team's hold
-    /// starts at minHold and doubles up to maxHold each time the team wins a trial, so that a
-    /// settled choice costs few trials and a change of the load is seen again; one thread's
-    /// win, or a hold on all threads ended by its watch, starts all threads' hold over, and
-    /// only a whole hold on all threads one thread's (a trial may catch a quiet moment).
+    /// step whose cost changed, is timed again on both teams). Two threads slower than one
+    /// are kept for about trialCalls calls, not a hold. Each team's hold starts at minHold
+    /// and doubles up to maxHold each time the team wins a trial, so that a settled choice
+    /// costs few trials and a change of the load is seen again; one thread's win, or a hold
+    /// on all threads ended by its watch, starts all threads' hold over, and only a whole
+    /// hold on all threads one thread's (a trial may catch a quiet moment).
     /// Why the mean: beside a busy core, most calls on two threads are faster than one
     /// thread's, but every few waits a scheduler's time slice for the core its partner
     /// shares (5-100 times as long): a median sees the fast calls and chose two threads at a
@@ -66,10 +66,10 @@ private:
     // The current hold on all threads: its calls so far, the times of the last trialCalls, s
     std::int64_t watchedCalls_ = 0;
     std::array<double, trialCalls> watched_{};
-
-    void hold(int team);
     std::array<std::int64_t, 2> calls_{};
     std::int64_t holdsCutShort_ = 0;
+
+    void hold(int team);
 };
 
 } // namespace dem
