@@ -3,6 +3,8 @@
 """Small helpers for the solver tests: OpenFOAM fields (the project's own
 reader, dpmfoam2d.fields: ASCII or binary) and correlations."""
 
+import re
+
 import numpy as np
 
 from dpmfoam2d.fields import internal_field  # noqa: F401  (used by the tests)
@@ -34,3 +36,21 @@ def patch_mean(path, patch):
     if m is None:
         raise ValueError(f"{path}: no nonuniform value on patch {patch}")
     return np.array(m.group(1).split(), dtype=float).mean()
+
+
+def exchange_balance(log):
+    """(writes, worst relative mismatch) of a dpmFoam2D log's exchange
+    lines: at each write the force on the particles against the reaction
+    mapped to the gas, and the particles' area or volume against what the
+    cells received."""
+    forces = re.findall(r"force on particles \(([^)]*)\) N, reaction mapped to the gas "
+                        r"\(([^)]*)\) N", log)
+    amounts = re.findall(r"particle (?:area|volume) (\S+) m[23], mapped to cells (\S+) m[23]",
+                         log)
+    worst = 0.0
+    for fp, fg in forces:
+        a, b = np.array(fp.split(), float), np.array(fg.split(), float)
+        worst = max(worst, np.abs(a - b).max() / max(np.abs(a).max(), 1e-300))
+    for ap, ac in amounts:
+        worst = max(worst, abs(float(ap) - float(ac)) / float(ap))
+    return len(forces), worst

@@ -139,6 +139,42 @@ Foam::scalar Foam::dpmCloud::gasSpeedSum() const
 }
 
 
+void Foam::dpmCloud::reportWalls(Ostream& os) const
+{
+    const std::vector<dem::WallSettings>& walls =
+        engine_.dem().settings().walls;
+    if (walls.empty()) return;
+    const wordList names(dict_.subDict("wallShapes").sortedToc());
+    os  << "    walls (wallShapes, fitted to the mesh's patches):";
+    auto text = [](const dem::Vector3& v)
+    {
+        return
+            "(" + Foam::name(v.x) + " " + Foam::name(v.y) + " "
+          + Foam::name(v.z) + ")";
+    };
+    // In the order of the mesh's patches, as bedWalls reads them
+    label k = 0;
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if (!names.found(pp.name()) || k >= label(walls.size())) continue;
+        const dem::WallSettings& w = walls[k++];
+        os  << nl << "        " << pp.name() << ": ";
+        if (w.shape == dem::WallShape::plane)
+        {
+            os  << "plane through " << text(w.point).c_str()
+                << ", normal " << text(w.normal).c_str();
+        }
+        else
+        {
+            os  << "cylinder about the axis " << text(w.axis).c_str()
+                << " through " << text(w.point).c_str() << ", radius "
+                << w.radius << " m";
+        }
+    }
+    os  << nl;
+}
+
+
 void Foam::dpmCloud::reportContact(Ostream& os) const
 {
     const dem::ContactSettings& c = engine_.dem().settings().contact;
@@ -207,6 +243,7 @@ void Foam::dpmCloud::report(Ostream& os) const
         << nl;
     grid_->report(os);
     particleModel_.voidage().report(os);
+    reportWalls(os);
     os
         << "    time steps: CFD " << mesh_.time().deltaTValue() << " s, DEM "
         << s.dt << " s (" << subSteps() << " sub-steps); safe bound "

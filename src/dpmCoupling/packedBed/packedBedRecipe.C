@@ -180,8 +180,14 @@ Foam::scalar Foam::packedBed::slabPackHeight
     {
         V += counts[k]*constant::mathematical::pi*d3[k]/6;
     }
+    // The bed's cross-section: the box's, or a vessel's of other walls
+    // (the mesh's volume over its height: a prism along gravity)
     const scalar width = grid_.xMax() - grid_.xMin();
-    return 5*V/(width*grid_.depth());
+    const scalar crossSection =
+        engine_.dem().settings().walls.empty()
+      ? width*grid_.depth()
+      : gSum(grid_.cellVolumes())/(grid_.yMax() - grid_.yMin());
+    return 5*V/crossSection;
 }
 
 

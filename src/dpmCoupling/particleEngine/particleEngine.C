@@ -10,6 +10,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "particleEngine.H"
+#include "bedWalls.H"
 #include "positiveEntry.H"
 #include "mathematicalConstants.H"
 
@@ -94,6 +95,23 @@ dem::Settings Foam::particleEngine::settings
         s.neighbourSkin = boundedEntry(dict_, "neighbourSkin", 0, dMin, true);
     }
     model.selectEngine(s, grid_);
+    if (s.dimension == 3)
+    {
+        scalar dMin = GREAT;
+        for (const dem::ParticleClass& c : s.classes)
+        {
+            dMin = min(dMin, dem::smallestDiameter(c));
+        }
+        s.walls = bedWalls::read(dict_, grid_.mesh(), g, 0.5*dMin);
+    }
+    else if (dict_.found("wallShapes", keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'wallShapes' in " << dict_.name() << " names the walls"
+            << " of spheres; the voidage model's particles are discs, whose"
+            << " walls are the box's: allowed with voidageModel slab3D or"
+            << " spheres3D" << exit(FatalIOError);
+    }
     return s;
 }
 

@@ -47,6 +47,16 @@ void Foam::particleModel::selectEngine
 {
     if (slab())
     {
+        // The spheres' slab runs from z = 0 to its depth
+        if (mag(grid.zMin()) > 1e-9*grid.depth())
+        {
+            FatalErrorInFunction
+                << "The gas's mesh spans z from " << grid.zMin() << " to "
+                << grid.zMax() << " m; spheres need it from z = 0 (the"
+                << " particles' front wall or slab): move the mesh, e.g."
+                << " transformPoints -translate '(0 0 " << -grid.zMin()
+                << ")'" << exit(FatalError);
+        }
         s.dimension = 3;
         s.slabDepth = grid.depth();
     }

@@ -49,33 +49,6 @@ Description
 
 using namespace Foam;
 
-//- The message of the FatalError (or FatalIOError) f raises, "" for none
-template<class F>
-std::string errorOf(const F& f)
-{
-    FatalError.throwExceptions();
-    FatalIOError.throwExceptions();
-    try
-    {
-        f();
-    }
-    catch (const Foam::error& e)
-    {
-        FatalError.dontThrowExceptions();
-        FatalIOError.dontThrowExceptions();
-        return e.message();
-    }
-    FatalError.dontThrowExceptions();
-    FatalIOError.dontThrowExceptions();
-    return "";
-}
-
-bool says(const std::string& message, const char* words)
-{
-    return message.find(words) != std::string::npos;
-}
-
-
 // Selected by gasGrid unstructured; depth, volumes and the smallest cell
 // size of the 6 x 6 x 6 box of 10 mm cells (exact up to round-off); a
 // wrong name lists unstructured

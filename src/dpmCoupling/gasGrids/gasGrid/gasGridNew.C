@@ -25,7 +25,7 @@ Foam::autoPtr<Foam::gasGrid> Foam::gasGrid::New
         " depth; default), unstructured (any mesh with cells through the"
         " depth, the gas resolved in 3D: voidageModel spheres3D)"
     );
-    return (*meshConstructorTablePtr_)[choice](mesh);
+    return (*meshConstructorTablePtr_)[choice](dict, mesh);
 }
 
 

@@ -13,6 +13,7 @@ License
 #include "OStringStream.H"
 #include "Time.H"
 #include "addToRunTimeSelectionTable.H"
+#include "knownEntries.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -24,6 +25,37 @@ namespace Foam
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::unstructuredGrid::quadratureEntry
+(
+    const dictionary& dict,
+    const word& name,
+    const label deflt,
+    const label lower,
+    const label upper,
+    const label multipleOf
+)
+{
+    const dictionary* coeffs =
+        dict.findDict("unstructuredCoeffs", keyType::LITERAL);
+    if (!coeffs) return deflt;
+    const string where("constant/particleProperties/unstructuredCoeffs");
+    checkKnownEntries
+    (
+        *coeffs, wordList{"quadratureShells", "quadratureDirections"}, where
+    );
+    const label n = coeffs->lookupOrDefault<label>(name, deflt);
+    if (n < lower || n > upper || n % multipleOf)
+    {
+        FatalIOErrorInFunction(*coeffs)
+            << "Entry '" << name << "' = " << n << " in " << where.c_str()
+            << " is outside the allowed range [" << lower << ", " << upper
+            << "]" << (multipleOf > 1 ? " of even numbers" : "")
+            << exit(FatalIOError);
+    }
+    return n;
+}
+
 
 void Foam::unstructuredGrid::checkResolvedInDepth() const
 {
@@ -88,6 +120,24 @@ void Foam::unstructuredGrid::measureCells()
 Foam::unstructuredGrid::unstructuredGrid(const fvMesh& mesh)
 :
     unstructuredGrid(mesh, defaultShells, defaultDirections)
+{}
+
+
+Foam::unstructuredGrid::unstructuredGrid
+(
+    const dictionary& dict,
+    const fvMesh& mesh
+)
+:
+    unstructuredGrid
+    (
+        mesh,
+        quadratureEntry(dict, "quadratureShells", defaultShells, 1, 256, 1),
+        quadratureEntry
+        (
+            dict, "quadratureDirections", defaultDirections, 2, 4096, 2
+        )
+    )
 {}
 
 

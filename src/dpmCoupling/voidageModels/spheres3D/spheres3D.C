@@ -89,9 +89,9 @@ void Foam::voidageModels::spheres3D::report(Ostream& os) const
         slab3D::report(os);
         return;
     }
-    os  << "    3D spheres between walls z = 0 and z = " << grid_.depth()
-        << " m in a gas resolved in depth (" << grid_.cellCounts().c_str()
-        << " cells)" << endl;
+    os  << "    3D spheres in a gas resolved in depth ("
+        << grid_.cellCounts().c_str() << " cells), " << grid_.depth()
+        << " m deep" << endl;
 }
 
 
