@@ -140,12 +140,12 @@ fi
 if [ "$formulation" = B ]
 then
     py - <<PY || fail "distributor pressure against the force on the particles"
-import re, sys
+import glob, sys
 sys.path.insert(0, "$testsDir/solver")
 from foamData import patch_mean
 import numpy as np
-log = open("log.dpmFoam2D").read()
-force = float(re.findall(r"Exchange: force on particles \\(\\S+ (\\S+) ", log)[-1])
+table = np.loadtxt(glob.glob("postProcessing/exchangeBalance/*/exchangeBalance.dat")[0], ndmin=2)
+force = table[-1, 2]        # particleForce_y at the last write
 p = patch_mean("0.02/p_rgh", "inlet")
 area = 8 * 7.5e-3 * $depth
 # p_rgh leaves out the gas's hydrostatic head, so it carries the drag only:

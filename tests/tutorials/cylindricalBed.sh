@@ -43,6 +43,7 @@ functions
 {
     #includeFunc inletPressure
     inletPressure { writeInterval 1; writeArea true; }  // every step
+    #includeFunc exchangeBalance
 }
 EOF2
 ./Allrun >/dev/null 2>&1 || { tail -20 log.*; fail "Allrun"; }
@@ -103,7 +104,7 @@ print(f"inlet area {A*1e6:.2f} mm2 (pi R^2 {np.pi*R*R*1e6:.2f}), mean inlet p_rg
 print(f"containment: {len(files)} particle files, the deepest reach into the wall "
       f"{100*max(worstOut, 0):.2f} % of a radius (into the floor {100*max(worstFloor, 0):.2f} %)")
 
-writes, worst = exchange_balance(open("log.dpmFoam2D").read())
+writes, worst = exchange_balance()
 print(f"exchange balance: {writes} writes, worst relative mismatch {worst:.2e}")
 ok = (err < 0.05 and worstOut < 0.5 and len(files) > 40 and writes >= 5
       and worst < 1e-10)

@@ -47,16 +47,36 @@ void readSavedValues(FieldType& field, const Foam::fvMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::gasParticleExchange::reportBalance(Ostream& os) const
+Foam::gasParticleExchange::balanceSums
+Foam::gasParticleExchange::balance() const
 {
-    vector particleForce = Zero;
+    balanceSums b;
+    b.particleForce = Zero;
     if (K_.size() == engine_.size())
     {
         vectorField F;
         exchangedForces(F);
-        for (const vector& Fi : F) particleForce += Fi;
+        for (const vector& Fi : F) b.particleForce += Fi;
     }
-    const vector gasForce = gSum(Fp_.primitiveField()*grid_.cellVolumes());
+    b.gasForce = gSum(Fp_.primitiveField()*grid_.cellVolumes());
+    const voidageModel& voidage = particleModel_.voidage();
+    const Pair<scalar> amounts = voidage.amounts
+    (
+        engine_.size(), engine_.dem().diameter(),
+        particleFraction_.primitiveField()
+    );
+    b.particleAmount = amounts.first();
+    b.mappedAmount = amounts.second();
+    b.amountName = voidage.amountName();
+    return b;
+}
+
+
+void Foam::gasParticleExchange::reportBalance(Ostream& os) const
+{
+    const balanceSums b = balance();
+    const vector& particleForce = b.particleForce;
+    const vector& gasForce = b.gasForce;
 
     os  << "Exchange: force on particles " << particleForce
         << " N, reaction mapped to the gas " << gasForce << " N" << nl;
@@ -83,11 +103,10 @@ void Foam::gasParticleExchange::reportBalance(Ostream& os) const
                 << classes[k].name.c_str() << " " << byClass[k] << " N" << nl;
         }
     }
-    particleModel_.voidage().reportBalance
-    (
-        os, engine_.size(), engine_.dem().diameter(),
-        particleFraction_.primitiveField()
-    );
+    const char* unit = b.amountName == "area" ? " m2" : " m3";
+    os  << "Exchange: particle " << b.amountName.c_str() << " "
+        << b.particleAmount << unit << ", mapped to cells " << b.mappedAmount
+        << unit << endl;
 }
 
 

@@ -111,9 +111,8 @@ void Foam::voidageModels::discs2D::updateFields
 }
 
 
-void Foam::voidageModels::discs2D::reportBalance
+Foam::Pair<Foam::scalar> Foam::voidageModels::discs2D::amounts
 (
-    Ostream& os,
     const label n,
     const double* d,
     const scalarField&
@@ -124,10 +123,10 @@ void Foam::voidageModels::discs2D::reportBalance
     {
         particleArea += constant::mathematical::pi*d[i]*d[i]/4;
     }
-    const scalar mappedArea = gSum((1 - porosity2D_)*grid_.cellAreas());
-
-    os  << "Exchange: particle area " << particleArea
-        << " m2, mapped to cells " << mappedArea << " m2" << endl;
+    return Pair<scalar>
+    (
+        particleArea, gSum((1 - porosity2D_)*grid_.cellAreas())
+    );
 }
 
 

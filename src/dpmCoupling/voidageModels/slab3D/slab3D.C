@@ -144,9 +144,8 @@ void Foam::voidageModels::slab3D::updateFields
 }
 
 
-void Foam::voidageModels::slab3D::reportBalance
+Foam::Pair<Foam::scalar> Foam::voidageModels::slab3D::amounts
 (
-    Ostream& os,
     const label n,
     const double* d,
     const scalarField& phiP
@@ -157,10 +156,7 @@ void Foam::voidageModels::slab3D::reportBalance
     {
         particleVolume += constant::mathematical::pi*d[i]*d[i]*d[i]/6;
     }
-
-    os  << "Exchange: particle volume " << particleVolume
-        << " m3, mapped to cells " << gSum(phiP*grid_.cellVolumes())
-        << " m3" << endl;
+    return Pair<scalar>(particleVolume, gSum(phiP*grid_.cellVolumes()));
 }
 
 
