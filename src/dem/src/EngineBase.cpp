@@ -115,39 +115,27 @@ EngineBase<Derived, Traits>::EngineBase(const Settings& settings, std::vector<Wa
         const double mSmall = settings_.classes[k].density * pi * dSmall * dSmall * dSmall / 6.0;
         inertia[k] = mSmall * dSmall * dSmall / 10.0;   // a solid sphere, as Particles has it
     }
-    hertzMindlin_ = c.law == ContactLawType::hertzMindlin;
-    const std::vector<ParticleClass>& cls = settings_.classes;
+    // The materials of each class and of the walls, for the laws that read them
+    std::vector<ElasticMaterial> material(nClasses_);
+    for (int k = 0; k < nClasses_; ++k) {
+        material[k] = {settings_.classes[k].youngsModulus, settings_.classes[k].poissonRatio};
+    }
+    const ElasticMaterial wall{c.wallYoungsModulus, c.wallPoissonRatio};
     for (int a = 0; a < nClasses_; ++a) {
         for (int b = 0; b < nClasses_; ++b) {
             const double mEff = m[a] * m[b] / (m[a] + m[b]);
             const double rEff = r[a] * r[b] / (r[a] + r[b]);
             const ContactCoefficients own = pairCoefficients(c, a, b);
-            ContactLaw law = hertzMindlin_
-                ? makeHertzMindlinLaw(
-                      mEff, rEff,
-                      effectiveYoungsModulus(cls[a].youngsModulus, cls[a].poissonRatio,
-                                             cls[b].youngsModulus, cls[b].poissonRatio),
-                      effectiveShearModulus(cls[a].youngsModulus, cls[a].poissonRatio,
-                                            cls[b].youngsModulus, cls[b].poissonRatio),
-                      own.restitution, own.friction, c.tangentialDampingRatio)
-                : makeContactLaw(mEff, c.kn, c.kt, own.restitution, own.friction,
-                                 c.tangentialDampingRatio);
+            ContactLaw law = makeContactLaw(
+                c, {mEff, rEff, material[a], material[b], own.restitution}, own.friction);
             addRollingResistance(law, own.rollingFriction, rEff,
                                  inertia[a] * inertia[b] / (inertia[a] + inertia[b]), settings_.dt);
             rolling_ = rolling_ || own.rollingFriction > 0.0;
             pairLaws_.push_back(law);
         }
         const ContactCoefficients own = wallCoefficients(c, a);
-        ContactLaw law = hertzMindlin_
-            ? makeHertzMindlinLaw(
-                  m[a], r[a],
-                  effectiveYoungsModulus(cls[a].youngsModulus, cls[a].poissonRatio,
-                                         c.wallYoungsModulus, c.wallPoissonRatio),
-                  effectiveShearModulus(cls[a].youngsModulus, cls[a].poissonRatio,
-                                        c.wallYoungsModulus, c.wallPoissonRatio),
-                  own.restitution, own.friction, c.tangentialDampingRatio)
-            : makeContactLaw(m[a], c.kn, c.kt, own.restitution, own.friction,
-                             c.tangentialDampingRatio);
+        ContactLaw law =
+            makeContactLaw(c, {m[a], r[a], material[a], wall, own.restitution}, own.friction);
         addRollingResistance(law, own.rollingFriction, r[a], inertia[a], settings_.dt);
         rolling_ = rolling_ || own.rollingFriction > 0.0;
         wallLaws_.push_back(law);

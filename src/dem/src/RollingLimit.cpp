@@ -24,29 +24,32 @@ using Vec3 = Eigen::Vector3d;
 
 } // namespace
 
-template <class Law> void System::limitRollingTorques()
+void System::limitRollingTorques()
 {
     const Index n = static_cast<Index>(p_.size());
     const int* wStart = wallContacts_.start.data();
     double* share = rollingScale_.data();
     const double dt = settings_.dt;
+    withLaw(settings_.contact.law, [&](auto policy) {
+        using Law = decltype(policy);
 #pragma omp parallel num_threads(threads_)
-    {
-        const auto [first, last] = threadShare(n);
-        for (Index i = first; i < last; ++i) {
-            const Eigen::Vector2d pos(p_.x[i], p_.y[i]);
-            for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
-                const PlaneWall& w = walls_[wallContacts_.wall[s]];
-                const double overlap = p_.radius[i] - w.distance(pos);
-                if (overlap <= 0.0) continue;
-                const ContactLaw& law = wallLaws_[p_.classIndex[i]];
-                const PairGeometry g = wallGeometry(p_, i, w, overlap);
-                const double fn = Law::at(overlap, g.vRel.dot(g.nHat), law).fn;
-                share[i] += rollingResistance(g, fn, law).coefficient * dt * p_.invInertia[i];
+        {
+            const auto [first, last] = threadShare(n);
+            for (Index i = first; i < last; ++i) {
+                const Eigen::Vector2d pos(p_.x[i], p_.y[i]);
+                for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
+                    const PlaneWall& w = walls_[wallContacts_.wall[s]];
+                    const double overlap = p_.radius[i] - w.distance(pos);
+                    if (overlap <= 0.0) continue;
+                    const ContactLaw& law = wallLaws_[p_.classIndex[i]];
+                    const PairGeometry g = wallGeometry(p_, i, w, overlap);
+                    const double fn = stiffnessOf<Law>(overlap, g.vRel.dot(g.nHat), law).fn;
+                    share[i] += rollingResistance(g, fn, law).coefficient * dt * p_.invInertia[i];
+                }
             }
+            rollingScales(share, static_cast<std::size_t>(first), static_cast<std::size_t>(last));
         }
-        rollingScales(share, static_cast<std::size_t>(first), static_cast<std::size_t>(last));
-    }
+    });
     // The pairs' torques over the radius the torque sums are multiplied by, in list order
     const int* pi = pairs_.i.data();
     const int* pj = pairs_.j.data();
@@ -72,32 +75,35 @@ template <class Law> void System::limitRollingTorques()
                   unusedCount, unusedOverlap);
 }
 
-template <class Law> void SlabSystem::limitRollingTorques()
+void SlabSystem::limitRollingTorques()
 {
     const Index n = static_cast<Index>(p_.size());
     const int* wStart = wallContacts_.start.data();
     double* share = rollingScale_.data();
     const double dt = settings_.dt;
     SlabParticles& p = p_;
+    withLaw(settings_.contact.law, [&](auto policy) {
+        using Law = decltype(policy);
 #pragma omp parallel num_threads(threads_)
-    {
-        const auto [first, last] = threadShare(n);
-        for (Index i = first; i < last; ++i) {
-            for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
-                // Touching first: a candidate's normal may be undefined (a sphere on a
-                // cylinder's axis, 0/0), a touching sphere's is not
-                const Vec3 position = p.position(i);
-                if (p.radius[i] - wallDistance(wallContacts_.wall[s], position) <= 0.0) continue;
-                const WallSide side = wallSide(wallContacts_.wall[s], position);
-                const double overlap = p.radius[i] - side.distance;
-                const ContactLaw& law = wallLaws_[p.classIndex[i]];
-                const PairGeometry3 c = wallGeometry(p, i, side.nHat, overlap);
-                const double fn = Law::at(overlap, c.vRel.dot(c.nHat), law).fn;
-                share[i] += rollingResistance(c, fn, law).coefficient * dt * p.invInertia[i];
+        {
+            const auto [first, last] = threadShare(n);
+            for (Index i = first; i < last; ++i) {
+                for (int s = wStart[i]; s < wStart[i + 1]; ++s) {
+                    // Touching first: a candidate's normal may be undefined (a sphere on a
+                    // cylinder's axis, 0/0), a touching sphere's is not
+                    const Vec3 position = p.position(i);
+                    if (p.radius[i] - wallDistance(wallContacts_.wall[s], position) <= 0.0) continue;
+                    const WallSide side = wallSide(wallContacts_.wall[s], position);
+                    const double overlap = p.radius[i] - side.distance;
+                    const ContactLaw& law = wallLaws_[p.classIndex[i]];
+                    const PairGeometry3 c = wallGeometry(p, i, side.nHat, overlap);
+                    const double fn = stiffnessOf<Law>(overlap, c.vRel.dot(c.nHat), law).fn;
+                    share[i] += rollingResistance(c, fn, law).coefficient * dt * p.invInertia[i];
+                }
             }
+            rollingScales(share, static_cast<std::size_t>(first), static_cast<std::size_t>(last));
         }
-        rollingScales(share, static_cast<std::size_t>(first), static_cast<std::size_t>(last));
-    }
+    });
     // The pairs' torques over the radius the torque sums are multiplied by, in list order
     const int* pi = pairs_.i.data();
     const int* pj = pairs_.j.data();
@@ -125,10 +131,5 @@ template <class Law> void SlabSystem::limitRollingTorques()
     sumPairGroups(threads_, p.size(), [](std::size_t, std::size_t) {}, group,
                   unusedCount, unusedOverlap);
 }
-
-template void System::limitRollingTorques<LinearSpringDashpot>();
-template void System::limitRollingTorques<HertzMindlin>();
-template void SlabSystem::limitRollingTorques<LinearSpringDashpot>();
-template void SlabSystem::limitRollingTorques<HertzMindlin>();
 
 } // namespace dem

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "dem/System.hpp"
 
+#include "LawSupport.hpp"
 #include "SlabWalls.hpp"
 
 #include <algorithm>
@@ -20,8 +21,6 @@ std::string formatValue(double value)
     return s.str();
 }
 
-namespace {
-
 // Written as !(value > 0) etc. so that NaN is rejected too.
 void requirePositive(double value, const std::string& name)
 {
@@ -29,6 +28,13 @@ void requirePositive(double value, const std::string& name)
         throw Error(name + " = " + formatValue(value) + " is outside (0, inf)");
     }
 }
+
+std::string className(const Settings& s, int k)
+{
+    return "classes[" + std::to_string(k) + "] ('" + s.classes[k].name + "')";
+}
+
+namespace {
 
 void requireNonNegative(double value, const std::string& name)
 {
@@ -47,11 +53,6 @@ void requireRestitution(double value, const std::string& name)
                                                "representable" : "";
         throw Error(name + " = " + formatValue(value) + " is outside (0, 1]" + why);
     }
-}
-
-std::string className(const Settings& s, int k)
-{
-    return "classes[" + std::to_string(k) + "] ('" + s.classes[k].name + "')";
 }
 
 /// The per-pair and per-wall coefficients: classes in range, each pair and class once (a-b
@@ -165,19 +166,6 @@ std::vector<int> classesLargestFirst(const Settings& settings)
     return order;
 }
 
-std::string contactLawName(ContactLawType law)
-{
-    return law == ContactLawType::hertzMindlin ? "HertzMindlin" : "linear";
-}
-
-ContactLawType contactLawFromName(const std::string& name)
-{
-    for (ContactLawType law : {ContactLawType::linear, ContactLawType::hertzMindlin}) {
-        if (name == contactLawName(law)) return law;
-    }
-    throw Error("contactLaw '" + name + "' is not one of: linear, HertzMindlin");
-}
-
 void validateSettings(const Settings& s)
 {
     if (s.classes.empty()) {
@@ -205,30 +193,7 @@ void validateSettings(const Settings& s)
     requireNonNegative(c.rollingFriction, "rollingFriction");
     requireNonNegative(c.rollingFrictionWall, "rollingFrictionWall");
     validateOwnCoefficients(s);
-    if (c.law == ContactLawType::hertzMindlin) {
-        // The moduli of every material; kt is the linear law's (Mindlin's comes from them)
-        auto requireMaterial = [](double youngs, double poisson, const std::string& youngsName,
-                                  const std::string& poissonName) {
-            requirePositive(youngs, youngsName);
-            if (!(poisson > -1.0 && poisson <= 0.5)) {
-                throw Error(poissonName + " = " + formatValue(poisson)
-                            + " is outside (-1, 0.5] (contactLaw HertzMindlin)");
-            }
-        };
-        for (std::size_t k = 0; k < s.classes.size(); ++k) {
-            const std::string name = className(s, static_cast<int>(k));
-            requireMaterial(s.classes[k].youngsModulus, s.classes[k].poissonRatio,
-                            name + ".youngsModulus", name + ".poissonRatio");
-        }
-        requireMaterial(c.wallYoungsModulus, c.wallPoissonRatio, "wallYoungsModulus",
-                        "wallPoissonRatio");
-        requirePositive(c.impactSpeed, "impactSpeed");
-        if (c.kt >= 0.0) {
-            throw Error("kt = " + formatValue(c.kt) + " is the linear law's tangential stiffness: "
-                        "contactLaw HertzMindlin takes Mindlin's from youngsModulus and "
-                        "poissonRatio (remove kt)");
-        }
-    }
+    withLaw(c.law, [&](auto law) { decltype(law)::validate(s); });
 
     const Box& b = s.box;
     if (!(b.xMax > b.xMin) || !std::isfinite(b.xMax - b.xMin)) {

@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <type_traits>
 
 namespace dem {
 
@@ -47,9 +46,6 @@ void SlabSystem::computePairForces(double historyDt)
 template <class Law, bool Rolling>
 void SlabSystem::sumPairForces(double historyDt)
 {
-    constexpr bool hertz = std::is_same_v<Law, HertzMindlin>;
-    static_assert(hertz || std::is_same_v<Law, LinearSpringDashpot>,
-                  "a law needs its version of the batched kernel (SlabPairKernel.cpp)");
     SlabParticles& p = p_;
     const std::size_t n = p.size();
     const int* pi = pairs_.i.data();
@@ -58,8 +54,7 @@ void SlabSystem::sumPairForces(double historyDt)
     const int* groupStart = pairs_.groupStart.data();
     Vec3* xiT = pairs_.xi.data();
     const ContactLaw* laws = pairLaws_.data();
-    const SlabPairLoop kernel =
-        hertz ? streamingLoops().slabHertzPairs : streamingLoops().slabLinearPairs;
+    const SlabPairLoop kernel = streamingLoops().slab<Law>().pairs;
     // Sums over each particle's pairs in a.f* and a.t*; the t* hold the sum of nHat x Ft
     // until addWallForcesAndKick multiplies it by the radius (the torque on either partner
     // is r nHat x Ft, see contactForce).
@@ -124,7 +119,7 @@ void SlabSystem::sumPairForces(double historyDt)
                 b.xix[q] = xiT[k].x();
                 b.xiy[q] = xiT[k].y();
                 b.xiz[q] = xiT[k].z();
-                b.setLaw(q, laws[law[k]], hertz);
+                b.setLaw<Law>(q, laws[law[k]]);
             }
             kernel(b, count, historyDt);
             for (int q = 0; q < count; ++q) {
@@ -184,7 +179,7 @@ void SlabSystem::sumPairForces(double historyDt)
         if constexpr (Rolling) std::fill(rollingScale_.begin() + first, rollingScale_.begin() + last, 0.0);
     };
     sumPairGroups(threads_, n, zeroBlock, group, contactCount_, maxOverlap_);
-    if constexpr (Rolling) limitRollingTorques<Law>();
+    if constexpr (Rolling) limitRollingTorques();
 }
 
 } // namespace dem

@@ -3,25 +3,26 @@
 // The slab's contact kernel over a batch of touching pairs or wall contacts
 // (StreamingLoops.hpp): contactForce<3, Law> without rolling resistance, written per
 // component in its operations and their order, on packs of two contacts (the baseline's
-// SSE2) or four (AVX2), picked as the streaming loops (one at a time without SSE2).
+// SSE2) or four (AVX2), picked as the streaming loops (one at a time without SSE2). The law's
+// force is its policy's own response on the packs; every law of ContactLaws gets its loops.
+
+// The four-double packs pass only between functions inlined into the AVX2 one (the laws'
+// responses among them, hence before the includes): no call crosses the ABI GCC warns of
+#pragma GCC diagnostic ignored "-Wpsabi"
 
 #include "StreamingLoops.hpp"
 
+#include <array>
 #include <cmath>
 #include <initializer_list>
 #if defined(__SSE2__) || defined(DEM_HAVE_AVX2_LOOPS)
 #include <immintrin.h>
 #endif
 
-// The four-double packs pass only between functions inlined into the AVX2 one: no call
-// crosses the ABI GCC warns of
-#pragma GCC diagnostic ignored "-Wpsabi"
-
 namespace dem {
 
 namespace {
 
-enum class PairLaw { linear, hertz };
 enum class Partner { sphere, wall };   // a wall's nHat and overlap come given
 
 // Packs of doubles, one contact a lane: two (SSE2) or four (AVX2), a plain double on other
@@ -42,6 +43,14 @@ typedef double Pack4 __attribute__((vector_size(32), may_alias));
 }
 #endif
 
+// The square root a law's response takes on packs
+struct PackRoot {
+    template <class Pack> [[gnu::always_inline]] Pack operator()(const Pack& x) const
+    {
+        return squareRoot(x);
+    }
+};
+
 // The pack at p (aligned: the batch's arrays and q a multiple of the width), by reference
 template <class Pack> [[gnu::always_inline]] inline const Pack& load(const double* p)
 {
@@ -54,7 +63,7 @@ template <class Pack> [[gnu::always_inline]] inline Pack& at(double* p)
 
 // Both sides of the kernel's two branches are computed and selected; the side not taken
 // gets operands that raise no floating-point exception (the solver traps them).
-template <PairLaw law, Partner partner, class Pack>
+template <class Law, Partner partner, class Pack>
 [[gnu::always_inline]] inline void pairBody(SlabPairBatch& b, int count, double dt)
 {
     constexpr int width = sizeof(Pack) / sizeof(double);
@@ -91,21 +100,15 @@ template <PairLaw law, Partner partner, class Pack>
         const Pack vy = load<Pack>(b.dvy + q) + (sz * nx - sx * nz);
         const Pack vz = load<Pack>(b.dvz + q) + (sx * ny - sy * nx);
         const Pack vn = vx * nx + vy * ny + vz * nz;
-        // Law::at and normalForce
-        Pack trialFn, kt, etaT;
-        if constexpr (law == PairLaw::linear) {
-            trialFn = load<Pack>(b.normal + q) * overlap + load<Pack>(b.normalDamping + q) * vn;
-            kt = load<Pack>(b.tangential + q);
-            etaT = load<Pack>(b.tangentialDamping + q);
-        } else {
-            const Pack root = squareRoot(overlap);
-            const Pack quarter = squareRoot(root);
-            trialFn = load<Pack>(b.normal + q) * overlap * root
-                      + load<Pack>(b.normalDamping + q) * quarter * vn;
-            kt = load<Pack>(b.tangential + q) * root;
-            etaT = load<Pack>(b.tangentialDamping + q) * quarter;
-        }
-        const Pack fn = trialFn < zero ? zero : trialFn;   // std::max(trialFn, 0.0), NaN kept
+        // The law's force and its clamp (stiffnessOf)
+        const LawConstants<Pack> constants{load<Pack>(b.normal + q),
+                                           load<Pack>(b.normalDamping + q),
+                                           load<Pack>(b.tangential + q),
+                                           load<Pack>(b.tangentialDamping + q)};
+        const LawResponse<Pack> response = Law::response(overlap, vn, constants, PackRoot{});
+        // std::max(response.normal, 0.0), NaN kept
+        const Pack fn = response.normal < zero ? zero : response.normal;
+        const Pack kt = response.kt, etaT = response.etaT;
         const Pack limit = load<Pack>(b.mu + q) * fn;
         const Pack vtx = vx - vn * nx, vty = vy - vn * ny, vtz = vz - vn * nz;
         // The stored displacement turned into the tangent plane, its length kept
@@ -149,36 +152,42 @@ template <PairLaw law, Partner partner, class Pack>
     }
 }
 
-template <PairLaw law, Partner partner> void baselinePairs(SlabPairBatch& b, int count, double dt)
+template <class Law, Partner partner> void baselinePairs(SlabPairBatch& b, int count, double dt)
 {
-    pairBody<law, partner, BaselinePack>(b, count, dt);
+    pairBody<Law, partner, BaselinePack>(b, count, dt);
 }
 
 #ifdef DEM_HAVE_AVX2_LOOPS
-template <PairLaw law, Partner partner>
+template <class Law, Partner partner>
 __attribute__((target("avx2"))) void avx2Pairs(SlabPairBatch& b, int count, double dt)
 {
-    pairBody<law, partner, Pack4>(b, count, dt);
+    pairBody<Law, partner, Pack4>(b, count, dt);
 }
 #endif
 
-template <PairLaw law, Partner partner>
+template <class Law, Partner partner>
 SlabPairLoop pairs(SimdLevel level)
 {
 #ifdef DEM_HAVE_AVX2_LOOPS
-    if (level == SimdLevel::avx2) return avx2Pairs<law, partner>;
+    if (level == SimdLevel::avx2) return avx2Pairs<Law, partner>;
 #endif
-    return baselinePairs<law, partner>;
+    return baselinePairs<Law, partner>;
+}
+
+template <class... Laws>
+std::array<SlabLawLoops, sizeof...(Laws)> lawLoops(SimdLevel level, LawList<Laws...>)
+{
+    return {{{pairs<Laws, Partner::sphere>(level), pairs<Laws, Partner::wall>(level)}...}};
 }
 
 } // namespace
 
 namespace slabLoops {
 
-SlabPairLoop linearPairs(SimdLevel level) { return pairs<PairLaw::linear, Partner::sphere>(level); }
-SlabPairLoop hertzPairs(SimdLevel level) { return pairs<PairLaw::hertz, Partner::sphere>(level); }
-SlabPairLoop linearWalls(SimdLevel level) { return pairs<PairLaw::linear, Partner::wall>(level); }
-SlabPairLoop hertzWalls(SimdLevel level) { return pairs<PairLaw::hertz, Partner::wall>(level); }
+std::array<SlabLawLoops, ContactLaws::size> laws(SimdLevel level)
+{
+    return lawLoops(level, ContactLaws{});
+}
 
 } // namespace slabLoops
 

@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <type_traits>
 
 namespace dem {
 
@@ -35,11 +34,7 @@ template <class Law>
 void SlabSystem::batchedWallForces(const WallPick* picked, int m, double historyDt,
                                    std::size_t& touching, double& maxOverlap)
 {
-    constexpr bool hertz = std::is_same_v<Law, HertzMindlin>;
-    static_assert(hertz || std::is_same_v<Law, LinearSpringDashpot>,
-                  "a law needs its version of the batched kernel (SlabPairKernel.cpp)");
-    const SlabPairLoop kernel =
-        hertz ? streamingLoops().slabHertzWalls : streamingLoops().slabLinearWalls;
+    const SlabPairLoop kernel = streamingLoops().slab<Law>().walls;
     SlabParticles& p = p_;
     Vec3* wXi = wallContacts_.xi.data();
     SlabPairBatch b;
@@ -63,7 +58,7 @@ void SlabSystem::batchedWallForces(const WallPick* picked, int m, double history
             b.xix[q] = wXi[s].x();
             b.xiy[q] = wXi[s].y();
             b.xiz[q] = wXi[s].z();
-            b.setLaw(q, wallLaws_[p.classIndex[i]], hertz);
+            b.setLaw<Law>(q, wallLaws_[p.classIndex[i]]);
         }
         kernel(b, count, historyDt);
         for (int q = 0; q < count; ++q) {

@@ -16,6 +16,7 @@
 #include "dem/StateConversion.hpp"
 
 #include "StateIntegrity.hpp"
+#include "dem/ContactLaw.hpp"
 #include "dem/ContactList.hpp"
 #include "dem/Error.hpp"
 #include "dem/Facade.hpp"
@@ -170,8 +171,7 @@ std::vector<double> currentKey(In& in, const std::vector<double>& key,
     }
     const ContactSettings defaults;
     std::vector<double> widened(key.begin(), key.end() - 1);
-    for (double v : {law == ContactLawType::hertzMindlin ? 1.0 : 0.0,
-                     defaults.tangentialDampingRatio, 0.0, 0.0, 0.0, 0.0}) {
+    for (double v : {contactLawCode(law), defaults.tangentialDampingRatio, 0.0, 0.0, 0.0, 0.0}) {
         widened.push_back(v);
     }
     for (std::size_t k = 0; k < 2 * classes; ++k) widened.push_back(0.0);

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -121,14 +122,11 @@ std::string distributionCodeName(double code)
     return "none (one diameter)";
 }
 
-/// The law as the key stores it (0 linear, 1 HertzMindlin) and its name.
-double lawCode(ContactLawType law) { return law == ContactLawType::hertzMindlin ? 1.0 : 0.0; }
-
+/// The name of the law of a code in the key (contactLawCode).
 std::string lawName(double code)
 {
-    if (code == 0.0) return contactLawName(ContactLawType::linear);
-    if (code == 1.0) return contactLawName(ContactLawType::hertzMindlin);
-    return "unknown law " + formatValue(code);
+    const std::optional<ContactLawType> law = contactLawOfCode(code);
+    return law ? contactLawName(*law) : "unknown law " + formatValue(code);
 }
 
 std::string text(double value, int digits)
@@ -159,9 +157,9 @@ std::vector<double> settingsKey(const Settings& s, double skin)
     const ContactSettings& c = s.contact;
     for (double v : {c.kn, c.kt, c.restitution, c.restitutionWall, c.frictionParticle,
                      c.frictionWall, s.box.xMin, s.box.xMax, s.box.yMin, s.box.yMax,
-                     s.gravity[0], s.gravity[1], s.dt, lawCode(c.law), c.tangentialDampingRatio,
-                     c.rollingFriction, c.rollingFrictionWall, c.wallYoungsModulus,
-                     c.wallPoissonRatio}) {
+                     s.gravity[0], s.gravity[1], s.dt, contactLawCode(c.law),
+                     c.tangentialDampingRatio, c.rollingFriction, c.rollingFrictionWall,
+                     c.wallYoungsModulus, c.wallPoissonRatio}) {
         key.push_back(v);
     }
     for (const auto& m : s.classes) {
@@ -219,17 +217,21 @@ std::vector<Difference> compareSettingsKeys(const std::vector<double>& inFile,
     const std::size_t box = at("box xMin");   // box xMin, xMax, yMin, yMax
     const double extent = extentOf({here[box], here[box + 1], here[box + 2], here[box + 3]});
     const std::size_t law = at("contact law");
-    // The moduli, from the walls' to the classes' last: the linear law does not read them
+    // The moduli, from the walls' to the classes' last, and kn, kt: where both keys have one
+    // law, the entries it does not read are not compared
     const std::size_t moduli = at("contact wallYoungsModulus");
-    const bool bothLinear = inFile[law] == 0.0 && here[law] == 0.0;
-    // and HertzMindlin does not read the linear law's kn and kt (kt stays the default)
-    const bool bothHertz = inFile[law] == 1.0 && here[law] == 1.0;
+    const std::optional<ContactLawType> sameLaw =
+        inFile[law] == here[law] ? contactLawOfCode(here[law]) : std::nullopt;
+    const bool moduliUnread =
+        sameLaw && !withLaw(*sameLaw, [](auto policy) { return decltype(policy)::readsModuli; });
+    const bool stiffnessUnread =
+        sameLaw && !withLaw(*sameLaw, [](auto policy) { return decltype(policy)::readsStiffness; });
     std::vector<Difference> d;
     for (std::size_t k = 0; k < base; ++k) {
         if (inFile[k] == here[k]) continue;
         if (k >= box && k < box + 4 && sameCoordinate(inFile[k], here[k], extent)) continue;
-        if (bothLinear && k >= moduli) continue;
-        if (bothHertz && (names[k] == "contact kn" || names[k] == "contact kt")) continue;
+        if (moduliUnread && k >= moduli) continue;
+        if (stiffnessUnread && (names[k] == "contact kn" || names[k] == "contact kt")) continue;
         if (k == law) {
             d.push_back({names[k], lawName(inFile[k]), lawName(here[k])});
             continue;

@@ -101,17 +101,23 @@ using Index = std::ptrdiff_t;
     }
 }
 
+/// The loops of a level, the 2D engine's given.
+StreamingLoops loopsOf(SimdLevel level, DriftLoop drift, KickLoop kick)
+{
+    StreamingLoops l{level, drift, kick, slabLoops::drift(level), slabLoops::kick(level),
+                     slabLoops::laws(level), nullptr, nullptr, nullptr, nullptr};
+    l.slabLinearPairs = l.slab<LinearSpringDashpot>().pairs;
+    l.slabLinearWalls = l.slab<LinearSpringDashpot>().walls;
+    l.slabHertzPairs = l.slab<HertzMindlin>().pairs;
+    l.slabHertzWalls = l.slab<HertzMindlin>().walls;
+    return l;
+}
+
 const StreamingLoops& baselineLoops()
 {
-    static const StreamingLoops loops{SimdLevel::baseline,
-                                      Compiled<driftBody, DriftLoop>::baseline,
-                                      Compiled<kickBody, KickLoop>::baseline,
-                                      slabLoops::drift(SimdLevel::baseline),
-                                      slabLoops::kick(SimdLevel::baseline),
-                                      slabLoops::linearPairs(SimdLevel::baseline),
-                                      slabLoops::hertzPairs(SimdLevel::baseline),
-                                      slabLoops::linearWalls(SimdLevel::baseline),
-                                      slabLoops::hertzWalls(SimdLevel::baseline)};
+    static const StreamingLoops loops = loopsOf(SimdLevel::baseline,
+                                                Compiled<driftBody, DriftLoop>::baseline,
+                                                Compiled<kickBody, KickLoop>::baseline);
     return loops;
 }
 
@@ -143,15 +149,9 @@ const StreamingLoops& streamingLoops(SimdLevel level)
 {
     if (level == SimdLevel::baseline) return baselineLoops();
 #ifdef DEM_HAVE_AVX2_LOOPS
-    static const StreamingLoops avx2Loops{SimdLevel::avx2,
-                                          Compiled<driftBody, DriftLoop>::avx2,
-                                          Compiled<kickBody, KickLoop>::avx2,
-                                          slabLoops::drift(SimdLevel::avx2),
-                                          slabLoops::kick(SimdLevel::avx2),
-                                          slabLoops::linearPairs(SimdLevel::avx2),
-                                          slabLoops::hertzPairs(SimdLevel::avx2),
-                                          slabLoops::linearWalls(SimdLevel::avx2),
-                                          slabLoops::hertzWalls(SimdLevel::avx2)};
+    static const StreamingLoops avx2Loops = loopsOf(SimdLevel::avx2,
+                                                    Compiled<driftBody, DriftLoop>::avx2,
+                                                    Compiled<kickBody, KickLoop>::avx2);
     if (cpuHasAvx2()) return avx2Loops;
 #endif
     throw Error("environment variable DEM_SIMD = avx2: this CPU (or build) has no AVX2; unset "

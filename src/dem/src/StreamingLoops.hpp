@@ -21,6 +21,7 @@
 #include "dem/ContactLaw.hpp"
 #include "dem/Facade.hpp"   // Box
 
+#include <array>
 #include <cstddef>
 
 namespace dem {
@@ -98,13 +99,12 @@ using SlabKickLoop = void (*)(const SlabKickArrays& a, std::ptrdiff_t first,
 /// The touching contacts of the slab in a batch, structure of arrays: the pair or wall loop
 /// gathers them, a SlabPairLoop evaluates contactForce<3, Law> for all at once (vectorised
 /// across the contacts, no branch), the loop adds the forces in list order. One contact's
-/// operations and their order are contactForce's: the same bits.
+/// operations and their order are contactForce's, the law's force its policy's: the same bits.
 struct SlabPairBatch {
     static constexpr int capacity = 64;
     // In, pairs: x_j - x_i, r_i + r_j; walls: nHat (towards the wall), the overlap. Both:
-    // v_i - v_j (walls: v_i), r_i w_i + r_j w_j (walls: r_i w_i), the law's constants (linear:
-    // kn, etaN, kt, etaT; Hertz-Mindlin: hertzKn, hertzEtaN, mindlinKt, mindlinEtaT), mu.
-    // xi*: the stored tangential history in, the new one out.
+    // v_i - v_j (walls: v_i), r_i w_i + r_j w_j (walls: r_i w_i), the law's four constants
+    // (LawConstants), mu. xi*: the stored tangential history in, the new one out.
     alignas(64) double dx[capacity], dy[capacity], dz[capacity], rSum[capacity];
     alignas(64) double nx[capacity], ny[capacity], nz[capacity];
     alignas(64) double dvx[capacity], dvy[capacity], dvz[capacity];
@@ -116,13 +116,14 @@ struct SlabPairBatch {
     alignas(64) double fx[capacity], fy[capacity], fz[capacity];
     alignas(64) double nxFx[capacity], nxFy[capacity], nxFz[capacity], overlap[capacity];
 
-    /// Contact q's law constants: the Hertz-Mindlin ones or the linear ones.
-    void setLaw(int q, const ContactLaw& c, bool hertz)
+    /// Contact q's constants of law Law and its friction.
+    template <class Law> void setLaw(int q, const ContactLaw& c)
     {
-        normal[q] = hertz ? c.hertzKn : c.kn;
-        normalDamping[q] = hertz ? c.hertzEtaN : c.etaN;
-        tangential[q] = hertz ? c.mindlinKt : c.kt;
-        tangentialDamping[q] = hertz ? c.mindlinEtaT : c.etaT;
+        const LawConstants<double> k = Law::constants(c);
+        normal[q] = k.normal;
+        normalDamping[q] = k.normalDamping;
+        tangential[q] = k.tangential;
+        tangentialDamping[q] = k.tangentialDamping;
         mu[q] = c.mu;
     }
 };
@@ -130,6 +131,12 @@ struct SlabPairBatch {
 /// contactForce<3, Law> without rolling resistance for contacts [0, count) of a batch, the
 /// history accumulated over dt.
 using SlabPairLoop = void (*)(SlabPairBatch& b, int count, double dt);
+
+/// One law's batched loops: of sphere pairs, and of wall contacts (nHat and overlap given).
+struct SlabLawLoops {
+    SlabPairLoop pairs;
+    SlabPairLoop walls;
+};
 
 enum class SimdLevel { baseline, avx2 };
 
@@ -139,10 +146,15 @@ struct StreamingLoops {
     KickLoop secondHalfKick;
     SlabDriftLoop slabFirstHalfKickAndDrift;
     SlabKickLoop slabSecondHalfKick;
-    SlabPairLoop slabLinearPairs;   ///< LinearSpringDashpot
-    SlabPairLoop slabHertzPairs;    ///< HertzMindlin
-    SlabPairLoop slabLinearWalls;   ///< the wall contacts' (nHat and overlap given)
-    SlabPairLoop slabHertzWalls;
+    std::array<SlabLawLoops, ContactLaws::size> slabLaws;   ///< in the order of ContactLaws
+    // Those of the linear law and of Hertz-Mindlin by name, as their test takes them
+    SlabPairLoop slabLinearPairs, slabHertzPairs, slabLinearWalls, slabHertzWalls;
+
+    /// The batched loops of law Law.
+    template <class Law> const SlabLawLoops& slab() const
+    {
+        return slabLaws[ContactLaws::indexOf<Law>()];
+    }
 };
 
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -167,10 +179,8 @@ struct Compiled<body, void (*)(Args...)> {
 namespace slabLoops {
 SlabDriftLoop drift(SimdLevel level);
 SlabKickLoop kick(SimdLevel level);
-SlabPairLoop linearPairs(SimdLevel level);   // SlabPairKernel.cpp
-SlabPairLoop hertzPairs(SimdLevel level);
-SlabPairLoop linearWalls(SimdLevel level);
-SlabPairLoop hertzWalls(SimdLevel level);
+/// Every law's batched loops, in the order of ContactLaws (SlabPairKernel.cpp).
+std::array<SlabLawLoops, ContactLaws::size> laws(SimdLevel level);
 } // namespace slabLoops
 
 /// Whether this CPU runs the AVX2 version.

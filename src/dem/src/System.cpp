@@ -182,7 +182,7 @@ void System::sumPairForces(double historyDt)
         if constexpr (Rolling) std::fill(share + first, share + last, 0.0);
     };
     sumPairGroups(threads_, n, zeroBlock, group, contactCount_, maxOverlap_);
-    if constexpr (Rolling) limitRollingTorques<Law>();
+    if constexpr (Rolling) limitRollingTorques();
 }
 
 void System::addWallForcesAndKick(double historyDt, bool kick, bool fluid)

@@ -3,9 +3,8 @@
 #pragma once
 // The pair-force arithmetic, shared by particle-particle and particle-wall contacts and by
 // the 2D mode (discs in the x-y plane) and the slab mode (3D spheres), templated on the
-// dimension and on the contact law (LinearSpringDashpot, HertzMindlin), which the engines
-// choose once at set-up. Stateless: geometry and stored history in, force, torques and new
-// history out.
+// dimension and on the contact law's policy (ContactLaw.hpp), which the engines choose once
+// at set-up. Stateless: geometry and stored history in, force, torques and new history out.
 
 #include "dem/ContactLaw.hpp"
 
@@ -80,60 +79,6 @@ inline Eigen::Vector3d selectWithoutBranch(bool c, const Eigen::Vector3d& a,
             selectWithoutBranch(c, a.z(), b.z())};
 }
 
-/// Normal force magnitude max(kn delta + etaN vn, 0) (vn > 0 approaching); F_n = -fn nHat on
-/// i. Clamped at zero: the dashpot does not pull the particles together before they part,
-/// so friction and rolling resistance, limited by fn, act only while they are pressed
-/// (etaN is the damping that gives e with the clamp, dampingFromRestitution).
-inline double normalForce(double overlap, double vn, const ContactLaw& law)
-{
-    return std::max(law.kn * overlap + law.etaN * vn, 0.0);
-}
-
-/// What a law gives one contact: the normal force magnitude (F_n = -fn nHat on i, >= 0) and
-/// the tangential spring and dashpot at its overlap.
-struct ContactStiffness {
-    double fn;     ///< N
-    double kt;     ///< N/m
-    double etaT;   ///< N s/m
-};
-
-/// Half the spring energy kt xi^2 of a tangential history (2D: a scalar; 3D: a vector), J.
-inline double springEnergy(double kt, double xi) { return 0.5 * kt * xi * xi; }
-inline double springEnergy(double kt, const Eigen::Vector3d& xi) { return 0.5 * kt * xi.squaredNorm(); }
-
-/// The paper's linear spring-dashpot: constant kn, kt, etaN, etaT (docs/theory/dem.md, "Particles").
-struct LinearSpringDashpot {
-    static ContactStiffness at(double overlap, double vn, const ContactLaw& law)
-    {
-        return {normalForce(overlap, vn, law), law.kt, law.etaT};
-    }
-    template <class History>
-    static double elasticEnergy(double overlap, const History& xi, const ContactLaw& law)
-    {
-        return 0.5 * law.kn * overlap * overlap + springEnergy(law.kt, xi);
-    }
-};
-
-/// Hertz's normal force and Mindlin and Deresiewicz's tangential stiffness (docs/theory/dem.md, "The
-/// Hertz-Mindlin law"): F_n = max(Kn delta^3/2 + etaN' delta^1/4 v_n, 0) (Tsuji et al.
-/// 1992's damping, its coefficient solved for the restitution), kt = Kt' delta^1/2,
-/// eta_t = etaT' delta^1/4.
-struct HertzMindlin {
-    static ContactStiffness at(double overlap, double vn, const ContactLaw& law)
-    {
-        const double root = std::sqrt(overlap);     // delta^1/2
-        const double quarter = std::sqrt(root);     // delta^1/4
-        const double fn = std::max(law.hertzKn * overlap * root + law.hertzEtaN * quarter * vn, 0.0);
-        return {fn, law.mindlinKt * root, law.mindlinEtaT * quarter};
-    }
-    template <class History>
-    static double elasticEnergy(double overlap, const History& xi, const ContactLaw& law)
-    {
-        const double root = std::sqrt(overlap);
-        return 0.4 * law.hertzKn * overlap * overlap * root + springEnergy(law.mindlinKt * root, xi);
-    }
-};
-
 /// A rolling torque and its coefficient c = |M|/|w_r|, the torque per unit relative rolling
 /// speed (at rest the clamp's slope, which a torque of any speed is at most): the share of the
 /// rolling it takes in a step, which the engines' limit sums per particle (RollingLimit.hpp).
@@ -167,7 +112,7 @@ rollingResistance(const PairGeometryT<Dim>& g, double fn, const ContactLaw& law)
     }
 }
 
-/// A contact under Law (LinearSpringDashpot or HertzMindlin) with Coulomb friction.
+/// A contact under Law (a policy of ContactLaws) with Coulomb friction.
 ///
 /// The tangential spring lives in the tangent plane of the contact. In 3D the stored
 /// displacement is first turned into the current tangent plane (its component along nHat
@@ -196,7 +141,7 @@ template <int Dim, class Law = LinearSpringDashpot, bool Rolling = false>
         const Eigen::Vector2d tHat(-g.nHat.y(), g.nHat.x());
         const double vn = g.vRel.dot(g.nHat);     // > 0 approaching
         const double vt = g.vRel.dot(tHat);
-        const ContactStiffness c = Law::at(g.overlap, vn, law);
+        const ContactStiffness c = stiffnessOf<Law>(g.overlap, vn, law);
         const double fn = c.fn;
         const double xiTrial = g.xiT + vt * dt;
         const double trial = -c.kt * xiTrial - c.etaT * vt;
@@ -227,7 +172,7 @@ template <int Dim, class Law = LinearSpringDashpot, bool Rolling = false>
         }
     } else {
         const double vn = g.vRel.dot(g.nHat);
-        const ContactStiffness c = Law::at(g.overlap, vn, law);
+        const ContactStiffness c = stiffnessOf<Law>(g.overlap, vn, law);
         const double fn = c.fn;
         const double limit = law.mu * fn;
         const Eigen::Vector3d vt = g.vRel - vn * g.nHat;

@@ -167,19 +167,16 @@ protected:
     /// the run that saved the state.
     void fitSearchCells();
     void setFluidForceAtCurrentVelocity(bool fluid);
-    /// body(Law{}, std::bool_constant<Rolling>{}) with the contact law (LinearSpringDashpot or
-    /// HertzMindlin) and the rolling resistance of the settings: the engines' contact loops
-    /// are compiled once per law and chosen here once per loop, not per contact.
+    /// body(Law{}, std::bool_constant<Rolling>{}) with the contact law's policy (withLaw) and
+    /// the rolling resistance of the settings: the engines' contact loops are compiled once
+    /// per law and chosen here once per loop, not per contact.
     template <class Body>
     void withContactLaw(const Body& body) const
     {
-        if (hertzMindlin_) {
-            if (rolling_) body(HertzMindlin{}, std::true_type{});
-            else body(HertzMindlin{}, std::false_type{});
-        } else {
-            if (rolling_) body(LinearSpringDashpot{}, std::true_type{});
-            else body(LinearSpringDashpot{}, std::false_type{});
-        }
+        withLaw(settings_.contact.law, [&](auto law) {
+            if (rolling_) body(law, std::true_type{});
+            else body(law, std::false_type{});
+        });
     }
     /// body(first, last) on each thread for its share of the particles.
     template <class Body>
@@ -213,7 +210,6 @@ protected:
     std::vector<ContactLaw> pairLaws_;   // nClasses x nClasses
     std::vector<ContactLaw> wallLaws_;   // per class
     bool rolling_ = false;               // some law has rolling resistance: its loops run
-    bool hertzMindlin_ = false;          // ContactSettings::law is HertzMindlin
     ParticleArrays p_;
     PairListT<History> pairs_;
     WallListT<History> wallContacts_;

@@ -183,7 +183,7 @@ private:
                            std::size_t& touching, double& maxOverlap);
 
     /// With rolling resistance, after the pair forces: as System's (RollingLimit.hpp).
-    template <class Law> void limitRollingTorques();
+    void limitRollingTorques();
 
     std::vector<CylinderWall> cylinders_;   // after the planes in the wall index (wallCount)
     std::vector<int> touchingScratch_;   // the touching pairs of each group, per step

@@ -90,7 +90,7 @@ private:
     /// With rolling resistance, after the pair forces: each particle's rolling scale from
     /// its pair and wall contacts (RollingLimit.hpp), then the pairs' rolling torques scaled
     /// and added; the walls' are scaled in the wall loop.
-    template <class Law> void limitRollingTorques();
+    void limitRollingTorques();
     [[noreturn]] void throwLostParticle() const;
     /// The walls the neighbour list tests (EngineBase): the box's.
     int wallCount() const { return static_cast<int>(walls_.size()); }

@@ -42,7 +42,7 @@ ENVIRONMENT.pop("LD_LIBRARY_PATH", None)
 # includes it for its types, whose objects the mutation leaves as they are. Another header's
 # mutation rebuilds the sources that include it, directly or through other headers.
 KERNEL_HEADER = "ContactKernel.hpp"
-KERNEL_CALLS = re.compile(r"\b(contactForce|rollingResistance|normalForce|elasticEnergy)\s*[<(]")
+KERNEL_CALLS = re.compile(r"\b(contactForce|rollingResistance|selectWithoutBranch)\s*[<(]")
 
 
 def sources(source):
