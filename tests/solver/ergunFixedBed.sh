@@ -78,6 +78,12 @@ setFormulation "${2:-}"
 setMomentum
 [ "$voidageModel" = discs2D ] || setEntry constant/particleProperties voidageModel "$voidageModel"
 setEntry constant/gasProperties U0byUmf 0.5
+cat >>system/controlDict <<'EOF3'
+functions
+{
+    #includeFunc exchangeBalance    // the force on the particles, read below
+}
+EOF3
 runSolver
 
 py - <<PY || fail "Ergun pressure gradient"
