@@ -41,9 +41,11 @@ vector snapped(const vector& v, const scalar q)
 }
 
 
-//- The patches the particles can meet: all but empty and coupled ones and
-//  those without faces
-wordList wallPatches(const fvMesh& mesh)
+} // End anonymous namespace
+} // End namespace Foam
+
+
+Foam::wordList Foam::bedWalls::wallPatches(const fvMesh& mesh)
 {
     wordList names;
     for (const polyPatch& pp : mesh.boundaryMesh())
@@ -59,6 +61,12 @@ wordList wallPatches(const fvMesh& mesh)
     }
     return names;
 }
+
+
+namespace Foam
+{
+namespace
+{
 
 
 //- The fits' values rounded to this fraction of their tolerance: lengths

@@ -13,6 +13,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dpmCloud.H"
+#include "bedWalls.H"
 
 #include <algorithm>
 #include <cmath>
@@ -144,7 +145,7 @@ void Foam::dpmCloud::reportWalls(Ostream& os) const
     const std::vector<dem::WallSettings>& walls =
         engine_.dem().settings().walls;
     if (walls.empty()) return;
-    const wordList names(dict_.subDict("wallShapes").sortedToc());
+    const wordList names(bedWalls::wallPatches(mesh_));
     os  << "    walls (wallShapes, fitted to the mesh's patches):";
     auto text = [](const dem::Vector3& v)
     {
@@ -152,13 +153,10 @@ void Foam::dpmCloud::reportWalls(Ostream& os) const
             "(" + Foam::name(v.x) + " " + Foam::name(v.y) + " "
           + Foam::name(v.z) + ")";
     };
-    // In the order of the mesh's patches, as bedWalls reads them
-    label k = 0;
-    for (const polyPatch& pp : mesh_.boundaryMesh())
+    forAll(names, k)
     {
-        if (!names.found(pp.name()) || k >= label(walls.size())) continue;
-        const dem::WallSettings& w = walls[k++];
-        os  << nl << "        " << pp.name() << ": ";
+        const dem::WallSettings& w = walls[k];
+        os  << nl << "        " << names[k] << ": ";
         if (w.shape == dem::WallShape::plane)
         {
             os  << "plane through " << text(w.point).c_str()

@@ -103,10 +103,9 @@ void Foam::gasParticleExchange::reportBalance(Ostream& os) const
                 << classes[k].name.c_str() << " " << byClass[k] << " N" << nl;
         }
     }
-    const char* unit = b.amountName == "area" ? " m2" : " m3";
     os  << "Exchange: particle " << b.amountName.c_str() << " "
-        << b.particleAmount << unit << ", mapped to cells " << b.mappedAmount
-        << unit << endl;
+        << b.particleAmount << " " << b.unit() << ", mapped to cells "
+        << b.mappedAmount << " " << b.unit() << endl;
 }
 
 

@@ -102,8 +102,7 @@ bool Foam::functionObjects::exchangeBalance::write()
         );
         writeHeaderValue
         (
-            os, "amount",
-            b.amountName == "area" ? word("area (m2)") : word("volume (m3)")
+            os, "amount", word(b.amountName + " (" + b.unit() + ")")
         );
         writeCommented(os, "Time");
         for (const char* column :

@@ -14,6 +14,7 @@ License
 #include "Time.H"
 #include "addToRunTimeSelectionTable.H"
 #include "knownEntries.H"
+#include "positiveEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -45,13 +46,12 @@ Foam::label Foam::unstructuredGrid::quadratureEntry
         *coeffs, wordList{"quadratureShells", "quadratureDirections"}, where
     );
     const label n = coeffs->lookupOrDefault<label>(name, deflt);
-    if (n < lower || n > upper || n % multipleOf)
+    checkedRange(*coeffs, name, n, lower, upper, false);
+    if (n % multipleOf)
     {
         FatalIOErrorInFunction(*coeffs)
             << "Entry '" << name << "' = " << n << " in " << where.c_str()
-            << " is outside the allowed range [" << lower << ", " << upper
-            << "]" << (multipleOf > 1 ? " of even numbers" : "")
-            << exit(FatalIOError);
+            << " is not a multiple of " << multipleOf << exit(FatalIOError);
     }
     return n;
 }
