@@ -4,6 +4,7 @@
 // CFD step's sub-steps and settling (the neighbour list: EngineNeighbourList.cpp).
 
 #include "dem/EngineBase.hpp"
+#include "dem/CoreLoad.hpp"
 #include "dem/SlabSystem.hpp"
 #include "dem/StateRecord.hpp"
 #include "dem/System.hpp"
@@ -16,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -80,6 +82,13 @@ private:
     std::vector<double> own_;            // their own mu, in that order; empty: none changed
 };
 
+/// The measured choice's view of the machine: the cores the rest of it leaves free
+ThreadChooser::FreeCores machineLoad(const Settings& settings)
+{
+    if (!settings.measureThreads || settings.nThreads == 1) return {};
+    return [load = std::make_shared<CoreLoad>()] { return load->freeCores(); };
+}
+
 } // namespace
 
 template <class Derived, class Traits>
@@ -87,7 +96,7 @@ EngineBase<Derived, Traits>::EngineBase(const Settings& settings, std::vector<Wa
                                         double startFraction, bool adaptive)
     : settings_(settings),
       threads_(settings.nThreads),
-      threadChooser_(settings.nThreads),
+      threadChooser_(settings.nThreads, machineLoad(settings)),
       nClasses_(static_cast<int>(settings.classes.size())),
       smallestDiameter_(smallestDiameter(settings)),
       largestDiameter_(largestDiameter(settings)),

@@ -145,6 +145,7 @@ double Simulation::neighbourSkin() const { return DEM_ON_ENGINE(neighbourSkin())
 std::int64_t Simulation::stepsOnOneThread() const { return DEM_ON_ENGINE(threadChooser().callsOnOne()); }
 std::int64_t Simulation::stepsOnAllThreads() const { return DEM_ON_ENGINE(threadChooser().callsOnAll()); }
 std::int64_t Simulation::threadHoldsCutShort() const { return DEM_ON_ENGINE(threadChooser().holdsCutShort()); }
+std::int64_t Simulation::threadTrialsSkipped() const { return DEM_ON_ENGINE(threadChooser().trialsSkipped()); }
 int Simulation::nextStepThreads() const { return DEM_ON_ENGINE(nextStepThreads()); }
 std::size_t Simulation::memoryBytes() const { return DEM_ON_ENGINE(memoryBytes()); }
 

@@ -5,7 +5,9 @@
 #include "dem/ThreadChooser.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
+#include <utility>
 
 namespace dem {
 
@@ -22,9 +24,10 @@ double meanWithoutSlowest(std::array<double, ThreadChooser::trialCalls> t)
 
 } // namespace
 
-ThreadChooser::ThreadChooser(int maxThreads)
-    : maxThreads_(std::max(1, maxThreads)), chosen_(maxThreads_)
+ThreadChooser::ThreadChooser(int maxThreads, FreeCores freeCores)
+    : maxThreads_(std::max(1, maxThreads)), freeCores_(std::move(freeCores)), chosen_(maxThreads_)
 {
+    if (maxThreads_ > 1) startTrial();
 }
 
 int ThreadChooser::next() const
@@ -59,7 +62,7 @@ void ThreadChooser::record(double seconds)
                     return;
                 }
                 hold_[1] = minHold;
-                trial_ = 0;
+                startTrial();
                 return;
             }
         }
@@ -67,7 +70,7 @@ void ThreadChooser::record(double seconds)
             // All threads kept up with one thread for a whole hold: one thread's next hold,
             // if a trial picks it, starts over
             if (team != 1) hold_[0] = minHold;
-            trial_ = 0;
+            startTrial();
         }
         return;
     }
@@ -89,6 +92,18 @@ void ThreadChooser::record(double seconds)
     if (!decided && ++trial_ < trialLength) return;
     oneMean_ = meanWithoutSlowest(times_[0]);
     hold(decided ? decided : oneMean_ < meanWithoutSlowest(times_[1]) ? 1 : maxThreads_);
+}
+
+void ThreadChooser::startTrial()
+{
+    // Not known (NaN): a trial. isless, as an ordered comparison with NaN raises the
+    // invalid-operation exception that OpenFOAM's runs trap
+    if (freeCores_ && std::isless(freeCores_(), maxThreads_ - 0.5)) {
+        ++trialsSkipped_;
+        hold(1);
+        return;
+    }
+    trial_ = 0;
 }
 
 void ThreadChooser::hold(int team)

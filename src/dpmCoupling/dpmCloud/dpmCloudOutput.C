@@ -273,7 +273,9 @@ void Foam::dpmCloud::reportThreads(Ostream& os) const
         << all << " CFD steps, one in " << one << " ("
         << label(100.0*one/max(one + all, label(1))) << "%); holds on "
         << s.nThreads << " ended by a slower step than one thread's: "
-        << engine_.dem().threadHoldsCutShort() << endl;
+        << engine_.dem().threadHoldsCutShort()
+        << "; trials skipped, too few cores free: "
+        << engine_.dem().threadTrialsSkipped() << endl;
 }
 
 

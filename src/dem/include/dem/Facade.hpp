@@ -342,6 +342,9 @@ public:
     /// The holds on nThreads ended early, their steps slower than one thread's in the trial
     /// before (ThreadChooser::holdsCutShort).
     std::int64_t threadHoldsCutShort() const;
+    /// The trials of nThreads not made: the rest of the machine left too few cores free
+    /// (ThreadChooser::trialsSkipped).
+    std::int64_t threadTrialsSkipped() const;
     /// The team the next CFD step (advance) runs its loops on: nThreads, or with
     /// measureThreads the one ThreadChooser picks for it. A caller's own loops around the
     /// step (the coupling's) follow it, so that a neighbour's load that makes one thread

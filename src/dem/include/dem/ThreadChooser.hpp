@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 
 namespace dem {
 
@@ -34,6 +35,10 @@ public:
     /// thread's, but every few waits a scheduler's time slice for the core its partner
     /// shares (5-100 times as long): a median sees the fast calls and chose two threads at a
     /// third of one thread's speed; the time spent is the mean's.
+    /// Before each trial the chooser asks how many cores the rest of the machine left free
+    /// (CoreLoad); fewer than maxThreads - 1/2 and one thread holds without a trial: beside a
+    /// busy core a trial's calls on all threads cost three times one thread's and some win
+    /// by catching a quiet moment, which kept two threads 10-20 % slower than one.
     static constexpr int trialCalls = 21;
     static constexpr int settleCalls = 2;
     static constexpr int blockCalls = settleCalls + trialCalls;
@@ -41,7 +46,11 @@ public:
     static constexpr std::int64_t minHold = 50;
     static constexpr std::int64_t maxHold = 3200;
 
-    explicit ThreadChooser(int maxThreads);
+    /// The cores others left free since it was last asked; NaN: not known (a trial decides).
+    using FreeCores = std::function<double()>;
+
+    /// Without freeCores, trials alone decide.
+    explicit ThreadChooser(int maxThreads, FreeCores freeCores = {});
 
     /// The team size for the next call.
     int next() const;
@@ -54,9 +63,12 @@ public:
     std::int64_t callsOnAll() const { return calls_[1]; }
     /// Holds on all threads ended by their watch.
     std::int64_t holdsCutShort() const { return holdsCutShort_; }
+    /// Trials not made because others kept fewer than maxThreads - 1/2 cores free.
+    std::int64_t trialsSkipped() const { return trialsSkipped_; }
 
 private:
     int maxThreads_;
+    FreeCores freeCores_;
     int trial_ = 0;                       // calls made in the current trial; trialLength: none
     std::array<std::array<double, trialCalls>, 2> times_{};   // [one, all][call]
     int chosen_;                          // the team size held
@@ -68,8 +80,11 @@ private:
     std::array<double, trialCalls> watched_{};
     std::array<std::int64_t, 2> calls_{};
     std::int64_t holdsCutShort_ = 0;
+    std::int64_t trialsSkipped_ = 0;
 
     void hold(int team);
+    /// A trial, or one thread's hold where too few cores are free for all threads.
+    void startTrial();
 };
 
 } // namespace dem
