@@ -251,7 +251,7 @@ Foam::dpmCloud::dpmCloud
     // slab), in its words rather than the DEM's; a distribution's largest
     particleModel_.voidage().checkDiameters
     (
-        dict_, particleEngine::largestDiametersOf(settings)
+        dict_, classNames_, particleEngine::largestDiametersOf(settings)
     );
     checks.demStep(settings);
     engine_.create(settings);

@@ -46,15 +46,6 @@ dem::Settings Foam::particleEngine::settings
     {
         const dictionary& c = classes.subDict(name);
         s.classes.push_back(readClass(c, name));
-        if (dem::largestDiameter(s.classes.back()) > grid_.minCellSize())
-        {
-            FatalIOErrorInFunction(c)
-                << "Entry 'diameter' = " << dem::largestDiameter(s.classes.back())
-                << " of class " << name << " in " << dict_.name()
-                << " is larger than the gas cell ("
-                << grid_.cellSize().c_str() << " m); allowed range (0, "
-                << grid_.minCellSize() << "]" << exit(FatalIOError);
-        }
     }
 
     s.contact = contactSettings();

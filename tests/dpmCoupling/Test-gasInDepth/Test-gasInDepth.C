@@ -260,6 +260,74 @@ TEST(Spheres3D, MappedVolumeIsTheParticlesOnOneAndTwoThreads)
 }
 
 
+// Spheres larger than a cell (1.5 and 2.5 cells, 14.3 and 23.8 mm, as on
+// a grid finer than NETL's intruder) among glass beads: each keeps its
+// volume, spread over the cells it covers by their exact sphere-box
+// volumes, and its cells stay within the stride; the voidage model takes
+// them up to six cells, the depth permitting
+TEST(Spheres3D, SpheresLargerThanACellKeepTheirVolume)
+{
+    const cartesianGrid grid(couplingTest::mesh());
+    const label nCells = grid.nx()*grid.ny()*grid.nz();
+    const scalarField& Vc = grid.cellVolumes();
+    autoPtr<voidageModel> exact(exactModel(grid));
+    Random rnd(29);
+    const label n = 1004;
+    List<double> x(n), y(n), z(n), d(n);
+    scalar Vp = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        d[i] = i < 2 ? 1.5*grid.dx() : i < 4 ? 2.5*grid.dx() : 3.101e-3;
+        const scalar r = 0.5*d[i];
+        x[i] = grid.xMin() + r + rnd.sample01<scalar>()*(grid.xMax() - grid.xMin() - 2*r);
+        y[i] = grid.yMin() + r + rnd.sample01<scalar>()*(0.08 - 2*r);
+        z[i] = grid.zMin() + r + rnd.sample01<scalar>()*(grid.zMax() - grid.zMin() - 2*r);
+        Vp += pi*pow3(d[i])/6;
+    }
+    scalarField eps(nCells), phiP(nCells);
+    exact->updateOverlaps(n, x.cdata(), y.cdata(), z.cdata(), d.cdata(), 2);
+    exact->updateFields(n, d.cdata(), eps, phiP);
+    check("larger than a cell: mapped volume = particles' volume", sum(phiP*Vc), Vp, 1e-12);
+    label most = 0;
+    forAll(exact->counts(), i) most = max(most, exact->counts()[i]);
+    check("larger than a cell: cells per particle within the stride", most <= exact->stride(), 1, 0);
+    check("larger than a cell: a sphere of 2.5 cells spans 4 in each direction", exact->stride(), 64, 0);
+
+    // The bound: the grid's largest spreading diameter (six cells), and
+    // the column's depth (four cells here)
+    const dictionary dict;
+    const wordList names{"glass", "intruder"};
+    const auto message = [&](const scalar dLarge)
+    {
+        FatalIOError.throwExceptions();
+        string m;
+        try
+        {
+            exact->checkDiameters(dict, names, scalarList{3.101e-3, dLarge});
+        }
+        catch (const IOerror& err)
+        {
+            m = err.message();
+        }
+        FatalIOError.dontThrowExceptions();
+        return m;
+    };
+    check("spheres3D takes a sphere of three cells", message(3*grid.dx()).empty(), 1, 0);
+    const string deep = message(grid.depth());
+    Info<< "    message: " << deep.c_str() << endl;
+    check("a sphere as deep as the column refused", deep.find("do not fit") != string::npos, 1, 0);
+    const string large = message(7*grid.dx());
+    Info<< "    message: " << large.c_str() << endl;
+    check
+    (
+        "a sphere of seven cells refused, naming its class and the range",
+        large.find("of class intruder") != string::npos
+     && large.find("allowed range (0, 0.05715]") != string::npos,
+        1, 0
+    );
+}
+
+
 // A simple cubic lattice of touching spheres, spacing a third of a
 // cell, its centres on the grid lines: every cell away from the walls
 // holds a solid fraction pi/6

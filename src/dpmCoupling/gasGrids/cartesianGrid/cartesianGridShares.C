@@ -109,9 +109,14 @@ void Foam::cartesianGrid::sphereShares
     cellWeights& shares
 ) const
 {
-    // The cells a sphere spans at most, in all directions: the particles
-    // are at most one cell across (the cloud checks it)
-    const scalar D = max(spreadingDiameter, minCellSize());
+    // The cells a sphere spans at most, in all directions: the largest
+    // particle's or the spreading sphere's (at most largestSpreadingDiameter:
+    // the voidage model checks it)
+    scalar D = spreadingDiameter;
+    for (label i = 0; i < n; ++i)
+    {
+        D = max(D, d[i]);
+    }
     const label stride =
         sphereCellSpan(D, dx_)*sphereCellSpan(D, dy_)
        *(resolvedInDepth() ? sphereCellSpan(D, dz_) : 1);

@@ -78,6 +78,18 @@ void Foam::voidageModels::slab3D::report(Ostream& os) const
 void Foam::voidageModels::slab3D::checkDiameters
 (
     const dictionary& dict,
+    const wordList& classNames,
+    const scalarList& diameters
+) const
+{
+    voidageModel::checkDiameters(dict, classNames, diameters);
+    checkFitInDepth(dict, diameters);
+}
+
+
+void Foam::voidageModels::slab3D::checkFitInDepth
+(
+    const dictionary& dict,
     const scalarList& diameters
 ) const
 {
@@ -87,9 +99,9 @@ void Foam::voidageModels::slab3D::checkDiameters
         if (!(d < depth))
         {
             FatalIOErrorInFunction(dict)
-                << "voidageModel slab3D in " << dict.name() << ": particles"
-                << " of diameter " << d << " m do not fit in the slab, whose"
-                << " depth is the mesh's thickness " << depth
+                << "voidageModel " << type() << " in " << dict.name()
+                << ": particles of diameter " << d << " m do not fit in the"
+                << " slab, whose depth is the mesh's thickness " << depth
                 << " m (system/bedGeometry depth); each class's 'diameter'"
                 << " must be less than the depth" << exit(FatalIOError);
         }

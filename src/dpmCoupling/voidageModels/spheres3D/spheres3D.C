@@ -95,6 +95,23 @@ void Foam::voidageModels::spheres3D::report(Ostream& os) const
 }
 
 
+void Foam::voidageModels::spheres3D::checkDiameters
+(
+    const dictionary& dict,
+    const wordList& classNames,
+    const scalarList& diameters
+) const
+{
+    checkLargest
+    (
+        dict, classNames, diameters, grid_.largestSpreadingDiameter(),
+        "the largest sphere voidageModel spheres3D maps (six of the smallest"
+        " gas cells, " + grid_.cellSize() + " m)"
+    );
+    checkFitInDepth(dict, diameters);
+}
+
+
 void Foam::voidageModels::spheres3D::updateOverlaps
 (
     const label n,

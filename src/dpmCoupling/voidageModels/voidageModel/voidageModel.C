@@ -43,4 +43,45 @@ void Foam::voidageModel::requireOneCellThick(const dictionary& dict) const
 }
 
 
+void Foam::voidageModel::checkLargest
+(
+    const dictionary& dict,
+    const wordList& classNames,
+    const scalarList& diameters,
+    const scalar largest,
+    const string& limit
+)
+{
+    forAll(diameters, i)
+    {
+        if (diameters[i] > largest)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'diameter' = " << diameters[i] << " of class "
+                << classNames[i] << " in " << dict.name()
+                << " is larger than " << limit.c_str()
+                << "; allowed range (0, " << largest << "]"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::voidageModel::checkDiameters
+(
+    const dictionary& dict,
+    const wordList& classNames,
+    const scalarList& diameters
+) const
+{
+    // A particle's area or volume goes to the cells its centre's cell and
+    // the neighbours share: it must not reach past them
+    checkLargest
+    (
+        dict, classNames, diameters, grid_.minCellSize(),
+        "the gas cell (" + grid_.cellSize() + " m)"
+    );
+}
+
+
 // ************************************************************************* //
