@@ -90,9 +90,10 @@ def sync(tree, copy):
                 shutil.copyfile(path, target)
 
 
-def read_mutations(path):
-    """The blocks of `path`: 'name:', 'file:', 'from:', 'to:' lines, a blank line between
-    blocks, '#' lines comments, '\\n' a line break. 'from' must occur once in its file."""
+def read_mutations(path, optional=()):
+    """The blocks of `path`: 'name:', 'file:', 'from:', 'to:' lines (and any of the keys
+    `optional`), a blank line between blocks, '#' lines comments, '\\n' a line break. 'from'
+    must occur once in its file."""
     mutations, block = [], {}
     with open(path) as f:
         lines = f.read().splitlines() + [""]
@@ -109,8 +110,9 @@ def read_mutations(path):
                 block = {}
             continue
         key, sep, value = line.partition(":")
-        if not sep or key not in ("name", "file", "from", "to"):
-            sys.exit(f"{path}:{number}: expected 'name:', 'file:', 'from:' or 'to:', got {line!r}")
+        if not sep or key not in ("name", "file", "from", "to") + tuple(optional):
+            keys = ", ".join(f"'{k}:'" for k in ("name", "file", "from", "to") + tuple(optional))
+            sys.exit(f"{path}:{number}: expected one of {keys}, got {line!r}")
         value = value[1:] if value.startswith(" ") else value
         block[key] = value.replace("\\n", "\n")
     return mutations
