@@ -43,16 +43,21 @@ def exchange_balance(case="."):
     """(writes, worst relative mismatch) of a case's exchange balance
     (the function object exchangeBalance's tables, every start time): at
     each write the force on the particles against the reaction the gas
-    cells carry, and the particles' area or volume against what the cells
-    received."""
+    cells carry, the particles' area or volume against what the cells
+    received, and their drag coefficients against the gas's implicit
+    share."""
     worst, writes = 0.0, 0
     for path in sorted(glob.glob(os.path.join(case, "postProcessing", "exchangeBalance",
                                               "*", "exchangeBalance.dat"))):
         rows = np.loadtxt(path, ndmin=2)
         if not rows.size:
             continue
-        # the relative excess computed at full precision, and the amounts
+        # the relative excess computed at full precision, the amounts, and
+        # the drag coefficients (none before the first step: 0 and 0)
         worst = max(worst, rows[:, 7].max())
         worst = max(worst, (np.abs(rows[:, 9] - rows[:, 8]) / rows[:, 8]).max())
+        drag = rows[:, 10] > 0
+        worst = max(worst, (np.abs(rows[drag, 11] - rows[drag, 10])
+                            / rows[drag, 10]).max(initial=0.0))
         writes += len(rows)
     return writes, worst

@@ -52,13 +52,16 @@ Foam::gasParticleExchange::balance() const
 {
     balanceSums b;
     b.particleForce = Zero;
+    b.particleDrag = 0;
     if (K_.size() == engine_.size())
     {
         vectorField F;
         exchangedForces(F);
         for (const vector& Fi : F) b.particleForce += Fi;
+        b.particleDrag = sum(K_);
     }
     b.gasForce = gSum(Fp_.primitiveField()*grid_.cellVolumes());
+    b.gasDrag = gSum(Kc_.primitiveField()*grid_.cellVolumes());
     const voidageModel& voidage = particleModel_.voidage();
     const Pair<scalar> amounts = voidage.amounts
     (
@@ -84,6 +87,8 @@ void Foam::gasParticleExchange::reportBalance(Ostream& os) const
     os  << "Exchange: reaction less the force on the particles " << excess
         << " N, relative " << mag(excess)/max(mag(particleForce), VSMALL)
         << nl;
+    os  << "Exchange: drag coefficients of the particles " << b.particleDrag
+        << " kg/s, the gas's implicit share " << b.gasDrag << " kg/s" << nl;
 
     // A fixed bed: the fluid force on each class of the held particles
     // (with one particle in a class, that particle's)

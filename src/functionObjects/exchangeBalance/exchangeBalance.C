@@ -97,8 +97,9 @@ bool Foam::functionObjects::exchangeBalance::write()
         (
             os,
             "The gas-particle exchange of the last step: the force on the"
-            " particles against the reaction the gas cells carry, and the"
-            " particles' amount against the one mapped to the cells"
+            " particles against the reaction the gas cells carry, the"
+            " particles' amount against the one mapped to the cells, and"
+            " their drag coefficients (kg/s) against the gas's implicit share"
         );
         writeHeaderValue
         (
@@ -109,7 +110,7 @@ bool Foam::functionObjects::exchangeBalance::write()
         {
             "particleForce_x", "particleForce_y", "particleForce_z",
             "gasForce_x", "gasForce_y", "gasForce_z", "relativeExcess",
-            "particleAmount", "mappedAmount"
+            "particleAmount", "mappedAmount", "particleDrag", "gasDrag"
         })
         {
             writeTabbed(os, column);
@@ -125,7 +126,7 @@ bool Foam::functionObjects::exchangeBalance::write()
     {
         b.particleForce.x(), b.particleForce.y(), b.particleForce.z(),
         b.gasForce.x(), b.gasForce.y(), b.gasForce.z(), excess,
-        b.particleAmount, b.mappedAmount
+        b.particleAmount, b.mappedAmount, b.particleDrag, b.gasDrag
     })
     {
         os  << tab << setw(charWidth()) << v;
