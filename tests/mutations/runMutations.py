@@ -24,7 +24,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(PROJECT, "src", "dem", "tests", "mutations"))
-from runMutations import failed_tests, read_mutations  # noqa: E402  (the DEM tool's)
+from runMutations import check_texts, failed_tests, read_mutations  # noqa: E402  (the DEM tool's)
 
 # The labels that guard the coupling, for --all
 LABELS = "coupling|solver"
@@ -69,14 +69,8 @@ def main():
     mutations = [m for m in read_mutations(args.list, optional=("tests",)) if args.k in m["name"]]
     if not mutations:
         sys.exit("no mutation selected")
+    check_texts(mutations, PROJECT)
     for m in mutations:
-        path = os.path.join(PROJECT, m["file"])
-        if not os.path.isfile(path):
-            sys.exit(f"mutation {m['name']!r}: no file {m['file']}")
-        count = open(path).read().count(m["from"])
-        if count != 1:
-            sys.exit(f"mutation {m['name']!r}: its 'from' text occurs {count} times in "
-                     f"{m['file']}, not once")
         if "tests" not in m and not args.all:
             sys.exit(f"mutation {m['name']!r}: no 'tests:' (or run with --all)")
 

@@ -118,6 +118,19 @@ def read_mutations(path, optional=()):
     return mutations
 
 
+def check_texts(mutations, root):
+    """Exits naming the first mutation whose file (under `root`) is missing or whose 'from'
+    text does not occur there exactly once."""
+    for m in mutations:
+        path = os.path.join(root, m["file"])
+        if not os.path.isfile(path):
+            sys.exit(f"mutation {m['name']!r}: file {m['file']} is not in {root}")
+        count = open(path).read().count(m["from"])
+        if count != 1:
+            sys.exit(f"mutation {m['name']!r}: its 'from' text occurs {count} times in "
+                     f"{m['file']}, not once")
+
+
 def run(command, cwd, log):
     """The command's exit code; its output appended to `log`."""
     done = subprocess.run(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
@@ -160,14 +173,7 @@ def main():
     args = parser.parse_args()
 
     mutations = [m for m in read_mutations(args.list) if args.k in m["name"]]
-    for m in mutations:
-        path = os.path.join(DEM, m["file"])
-        if not os.path.isfile(path):
-            sys.exit(f"mutation {m['name']!r}: file {m['file']} is not in {DEM}")
-        count = open(path).read().count(m["from"])
-        if count != 1:
-            sys.exit(f"mutation {m['name']!r}: its 'from' text occurs {count} times in "
-                     f"{m['file']}, not once")
+    check_texts(mutations, DEM)
     if not mutations:
         sys.exit("no mutation selected")
 
