@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <limits>
@@ -44,7 +43,7 @@ bool CoreLoad::read(Counters& c) const
     const double tick = 1.0 / static_cast<double>(sysconf(_SC_CLK_TCK));
     char line[512];
     int seen = 0;
-    double busy = 0.0, total = 0.0;
+    double busy = 0.0;
     while (std::fgets(line, sizeof line, f)) {
         int cpu = -1;
         // user nice system idle iowait irq softirq steal (guest time is inside user's)
@@ -57,7 +56,6 @@ bool CoreLoad::read(Counters& c) const
         if (cpu < 0 || cpu >= 1024 || !(mask_[cpu / 64] >> (cpu % 64) & 1u)) continue;
         const double b = static_cast<double>(t[0] + t[1] + t[2] + t[5] + t[6] + t[7]);
         busy += b * tick;
-        total += (b + static_cast<double>(t[3] + t[4])) * tick;
         ++seen;
     }
     std::fclose(f);
@@ -65,7 +63,6 @@ bool CoreLoad::read(Counters& c) const
     timespec own{};
     if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &own) != 0) return false;
     c.busy = busy;
-    c.total = total;
     c.own = static_cast<double>(own.tv_sec) + 1e-9 * static_cast<double>(own.tv_nsec);
     c.wall = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
                  .count();

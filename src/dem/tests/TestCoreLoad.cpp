@@ -37,9 +37,9 @@ TEST(CoreLoad, AWindowsArithmetic)
 {
     // 2 cores for 1 s: 1.5 core-seconds busy, 1.0 of them this process's: others took half
     // a core, 1.5 were free. Others' share above the mask clamps to 0 free.
-    const CoreLoad::Counters from{10.0, 20.0, 3.0, 100.0}, to{11.5, 22.0, 4.0, 101.0};
+    const CoreLoad::Counters from{10.0, 3.0, 100.0}, to{11.5, 4.0, 101.0};
     EXPECT_DOUBLE_EQ(CoreLoad::freeBetween(from, to, 2), 1.5);
-    const CoreLoad::Counters busier{13.0, 22.0, 3.0, 101.0};
+    const CoreLoad::Counters busier{13.0, 3.0, 101.0};
     EXPECT_DOUBLE_EQ(CoreLoad::freeBetween(from, busier, 2), 0.0);
 }
 

@@ -30,10 +30,10 @@ public:
     /// The cores in the affinity mask; 0 where it cannot be read.
     int cores() const { return cores_; }
 
-    /// One reading of the counters: the busy and the whole time of the mask's cores, and the
-    /// process's own CPU time, s; false where they cannot be read.
+    /// One reading of the counters: the busy time of the mask's cores, the process's own CPU
+    /// time and the wall clock, s; false where they cannot be read.
     struct Counters {
-        double busy = 0.0, total = 0.0, own = 0.0, wall = 0.0;
+        double busy = 0.0, own = 0.0, wall = 0.0;
     };
     bool read(Counters& c) const;
     /// The cores others left free between two readings, of `cores`: the busy time less the

@@ -83,16 +83,6 @@ void Foam::voidageModels::slab3D::checkDiameters
 ) const
 {
     voidageModel::checkDiameters(dict, classNames, diameters);
-    checkFitInDepth(dict, diameters);
-}
-
-
-void Foam::voidageModels::slab3D::checkFitInDepth
-(
-    const dictionary& dict,
-    const scalarList& diameters
-) const
-{
     const scalar depth = grid_.depth();
     for (const scalar d : diameters)
     {

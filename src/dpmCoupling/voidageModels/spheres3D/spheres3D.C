@@ -95,20 +95,17 @@ void Foam::voidageModels::spheres3D::report(Ostream& os) const
 }
 
 
-void Foam::voidageModels::spheres3D::checkDiameters
-(
-    const dictionary& dict,
-    const wordList& classNames,
-    const scalarList& diameters
-) const
+Foam::scalar Foam::voidageModels::spheres3D::largestDiameter() const
 {
-    checkLargest
-    (
-        dict, classNames, diameters, grid_.largestSpreadingDiameter(),
+    return grid_.largestSpreadingDiameter();
+}
+
+
+Foam::string Foam::voidageModels::spheres3D::largestDiameterLimit() const
+{
+    return
         "the largest sphere voidageModel spheres3D maps (six of the smallest"
-        " gas cells, " + grid_.cellSize() + " m)"
-    );
-    checkFitInDepth(dict, diameters);
+        " gas cells, " + grid_.cellSize() + " m)";
 }
 
 

@@ -43,27 +43,15 @@ void Foam::voidageModel::requireOneCellThick(const dictionary& dict) const
 }
 
 
-void Foam::voidageModel::checkLargest
-(
-    const dictionary& dict,
-    const wordList& classNames,
-    const scalarList& diameters,
-    const scalar largest,
-    const string& limit
-)
+Foam::scalar Foam::voidageModel::largestDiameter() const
 {
-    forAll(diameters, i)
-    {
-        if (diameters[i] > largest)
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'diameter' = " << diameters[i] << " of class "
-                << classNames[i] << " in " << dict.name()
-                << " is larger than " << limit.c_str()
-                << "; allowed range (0, " << largest << "]"
-                << exit(FatalIOError);
-        }
-    }
+    return grid_.minCellSize();
+}
+
+
+Foam::string Foam::voidageModel::largestDiameterLimit() const
+{
+    return "the gas cell (" + grid_.cellSize() + " m)";
 }
 
 
@@ -74,13 +62,19 @@ void Foam::voidageModel::checkDiameters
     const scalarList& diameters
 ) const
 {
-    // A particle's area or volume goes to the cells its centre's cell and
-    // the neighbours share: it must not reach past them
-    checkLargest
-    (
-        dict, classNames, diameters, grid_.minCellSize(),
-        "the gas cell (" + grid_.cellSize() + " m)"
-    );
+    const scalar largest = largestDiameter();
+    forAll(diameters, i)
+    {
+        if (diameters[i] > largest)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'diameter' = " << diameters[i] << " of class "
+                << classNames[i] << " in " << dict.name()
+                << " is larger than " << largestDiameterLimit().c_str()
+                << "; allowed range (0, " << largest << "]"
+                << exit(FatalIOError);
+        }
+    }
 }
 
 
